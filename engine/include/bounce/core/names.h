@@ -1,0 +1,29 @@
+#pragma once
+// Name comparison and "did you mean" suggestions, shared by the console, the ini
+// loader, the scene loader and the plugin host.
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bounce {
+
+/// ASCII case-insensitive equality (console variables, ini keys and plugin names are
+/// case-insensitive, as in Unreal).
+bool equalsIgnoreCase(std::string_view a, std::string_view b);
+bool startsWithIgnoreCase(std::string_view text, std::string_view prefix);
+std::string toLower(std::string_view text);
+
+/// Edit distance, case-insensitive.
+size_t editDistance(std::string_view a, std::string_view b);
+
+/// Up to `maxCount` candidates closest to `name`: prefix matches first, then by edit
+/// distance, dropping candidates too far to be a plausible typo.
+std::vector<std::string> closestNames(std::string_view name, std::span<const std::string> candidates,
+                                      size_t maxCount = 3);
+
+/// " (did you mean 'a', 'b'?)" or "" when nothing is close.
+std::string didYouMean(std::string_view name, std::span<const std::string> candidates);
+
+}  // namespace bounce

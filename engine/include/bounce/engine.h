@@ -1,0 +1,118 @@
+#pragma once
+// The host engine: configuration, console, plugins, the scene, and the frame graph.
+// Applications (bounce-render, the viewer, benchmarks, tests) create one Engine.
+
+#include "bounce/config/config_stack.h"
+#include "bounce/config/console.h"
+#include "bounce/config/cvar_registry.h"
+#include "bounce/frame/frame_context.h"
+#include "bounce/frame/pass_hooks.h"
+#include "bounce/graph/compiled_graph.h"
+#include "bounce/plugin/plugin_host.h"
+#include "bounce/renderer/renderer_settings.h"
+#include "bounce/scene/gltf_loader.h"
+#include "bounce/scene/object_parameters.h"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bounce {
+
+struct EngineOptions {
+  /// Repository/project root holding config/ (and content/). Empty: $BOUNCE_ROOT, else
+  /// the nearest parent of the executable with config/BaseEngine.ini.
+  std::filesystem::path root;
+  /// The user's ini. nullopt: $BOUNCE_USER_INI, else ~/.config/bounce/UserEngine.ini.
+  /// An empty path: no user ini (tests, reproducible benchmarks).
+  std::optional<std::filesystem::path> userIni;
+  std::vector<std::string> iniFiles;  ///< `-ini FILE`, loaded after the user ini
+  std::vector<std::string> sets;      ///< `-set NAME=VALUE`, at command-line priority
+  std::vector<std::string> enablePlugins;
+  std::vector<std::string> disablePlugins;
+  std::vector<std::filesystem::path> pluginDirs;  ///< searched before the defaults
+  bool defaultPluginDirs = true;                  ///< also search <exe>/../plugins and $BOUNCE_PLUGIN_PATH
+  std::string technique;                          ///< `--gi NAME`: selects (and enables) a GI technique
+};
+
+/// The engine's own passes, placed between the extension points by FrameBuilder
+/// (implemented by the renderer).
+struct EngineStages {
+  std::function<void(RenderGraph&, const FrameContext&)> geometry;     ///< shadows, G-buffer
+  std::function<void(RenderGraph&, const FrameContext&)> lighting;     ///< direct lighting, GI composite
+  std::function<void(RenderGraph&, const FrameContext&)> postProcess;  ///< bloom, tone mapping
+  std::function<void(RenderGraph&, const FrameContext&)> output;       ///< marks the frame's outputs
+};
+
+class Engine {
+ public:
+  explicit Engine(EngineOptions options);
+  ~Engine();
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  CVarRegistry& cvars() { return cvars_; }
+  Console& console() { return console_; }
+  ConfigStack& config() { return config_; }
+  ObjectParameterRegistry& parameters() { return parameters_; }
+  PassHookRegistry& hooks() { return hooks_; }
+  DebugViewRegistry& debugViews() { return debugViews_; }
+  PluginHost& plugins() { return *plugins_; }
+  EngineServices& services() { return services_; }
+
+  const std::filesystem::path& root() const { return root_; }
+  const std::filesystem::path& userIniPath() const { return userIni_; }
+  /// Problems with `-set`, `-ini` or `--gi` (unknown names, bad values, missing files):
+  /// applications exit with status 2 when this is not empty.
+  const std::vector<std::string>& commandLineErrors() const { return commandLineErrors_; }
+
+  /// Writes settings changed at console priority to the user ini, keeping its comments.
+  bool saveSettings(std::string* error);
+
+  /// Loads a glTF scene, validating extras against what plugins declared.
+  GltfLoadResult loadScene(const std::filesystem::path& path);
+  Scene* scene() { return scene_.get(); }
+  const Scene* scene() const { return scene_.get(); }
+  void setScene(std::unique_ptr<Scene> scene) { scene_ = std::move(scene); }
+  SceneExtrasSchema extrasSchema() const;
+
+  /// The selected GI technique if its plugin is loaded, else "none".
+  std::string technique() const;
+
+  /// Builds one frame's graph: engine stages and plugin hooks in extension-point order.
+  void buildFrame(RenderGraph& graph, const FrameContext& frame, const EngineStages& stages);
+
+  /// Engine variables plugins and the renderer read.
+  CVarRef<std::string> techniqueCVar() const { return technique_; }
+  const RendererSettings& rendererSettings() const { return *renderer_; }
+
+ private:
+  void registerEngineVariables();
+  void reportUnclaimedSettings();
+  std::filesystem::path locateRoot(const std::filesystem::path& hint) const;
+
+  CVarRegistry cvars_;
+  Console console_{cvars_};
+  ConfigStack config_;
+  ObjectParameterRegistry parameters_{cvars_};
+  PassHookRegistry hooks_;
+  DebugViewRegistry debugViews_;
+  EngineServices services_{cvars_, console_, config_, parameters_, hooks_, debugViews_};
+  std::unique_ptr<PluginHost> plugins_;
+  std::unique_ptr<Scene> scene_;
+
+  std::filesystem::path root_;
+  std::filesystem::path userIni_;
+  std::vector<std::string> commandLineErrors_;
+  CVarRef<bool> allowCheats_;
+  CVarRef<std::string> technique_;
+  std::unique_ptr<RendererSettings> renderer_;
+};
+
+/// Finds the folder of the running executable (for locating plugins and the root).
+std::filesystem::path executableDirectory();
+
+}  // namespace bounce

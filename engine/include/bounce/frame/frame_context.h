@@ -1,0 +1,45 @@
+#pragma once
+// What pass hooks see when they set up their passes for a frame.
+
+#include "bounce/config/cvar_registry.h"
+#include "bounce/frame/post_process_settings.h"
+#include "bounce/scene/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace bounce {
+
+/// The view being rendered.
+struct FrameView {
+  uint32_t width = 1;
+  uint32_t height = 1;
+  Camera camera;
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  glm::mat4 viewProjection{1.0f};
+  glm::mat4 inverseViewProjection{1.0f};
+  glm::vec3 position{0.0f};
+
+  static FrameView fromCamera(const Camera& camera, uint32_t width, uint32_t height);
+};
+
+struct FrameContext {
+  const Scene& scene;
+  const CVarRegistry& cvars;
+  const FrameView& view;
+  const PostProcessSettings& postProcess;
+  uint64_t frameIndex = 0;
+  std::string technique;  ///< the selected GI technique ("none" when off)
+
+  /// A setting's value for this frame: the post-process-blended value when the
+  /// variable is post-process-overridable, else the variable's value.
+  template <class T>
+  T setting(const CVarRef<T>& ref) const {
+    return postProcess.get<T>(ref.cvar());
+  }
+};
+
+}  // namespace bounce

@@ -1,0 +1,166 @@
+#pragma once
+// The frame's render graph: passes declare what they create, read and write; compiling
+// orders them, culls every pass whose results nobody needs (or whose condition says the
+// scene does not call for it), derives barriers and layout transitions, and computes
+// resource lifetimes. The engine builds a new graph every frame by calling its own
+// setup code and the plugins' pass hooks in extension-point order.
+//
+//   graph.addPass("VXGI.DiffuseTracing", Queue::Compute, [&](PassBuilder& b) {
+//     auto normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+//     auto out = b.write(b.createTexture("VXGI.Diffuse", TextureDesc::viewSized(fmt)),
+//                        Access::StorageWrite);
+//     bb.setTexture(channels::IndirectDiffuse, out);
+//     b.condition([&] { return anyFlagged ? PassDecision::run("3 materials voxelized")
+//                                         : PassDecision::skip("no material is flagged"); });
+//     return [=](PassContext& ctx) { /* record commands */ };
+//   });
+
+#include "bounce/graph/extension_point.h"
+#include "bounce/graph/pass_decision.h"
+#include "bounce/graph/persistent_resource.h"
+#include "bounce/graph/resource.h"
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bounce {
+
+class PassContext;  // record-time interface, implemented by the Vulkan executor
+using RecordFn = std::function<void(PassContext&)>;
+class CompiledGraph;
+class RenderGraph;
+
+/// Named handles shared between the engine and plugins within one frame (see channels.h).
+class Blackboard {
+ public:
+  void setTexture(std::string_view name, TextureHandle handle);
+  void setBuffer(std::string_view name, BufferHandle handle);
+  /// Invalid handle when absent.
+  TextureHandle texture(std::string_view name) const;
+  BufferHandle buffer(std::string_view name) const;
+  bool has(std::string_view name) const;
+  std::vector<std::string> names() const;
+
+ private:
+  std::map<std::string, TextureHandle, std::less<>> textures_;
+  std::map<std::string, BufferHandle, std::less<>> buffers_;
+};
+
+/// Declares one pass's resources during setup.
+class PassBuilder {
+ public:
+  TextureHandle createTexture(std::string name, const TextureDesc& desc);
+  BufferHandle createBuffer(std::string name, const BufferDesc& desc);
+
+  /// A required read: the pass depends on the producer of that version, and is culled
+  /// when that producer is culled (unless the resource is persistent).
+  TextureHandle read(TextureHandle handle, Access access);
+  BufferHandle read(BufferHandle handle, Access access);
+  /// An optional read: ignored when the handle is invalid or its producer is culled;
+  /// PassContext::available() then says false at record time.
+  TextureHandle readOptional(TextureHandle handle, Access access);
+  BufferHandle readOptional(BufferHandle handle, Access access);
+  /// A write produces a new version and returns it. The pass depends on the previous
+  /// version's producer (its contents are kept), if there is one.
+  TextureHandle write(TextureHandle handle, Access access);
+  BufferHandle write(BufferHandle handle, Access access);
+
+  /// A condition evaluated when the graph compiles; a pass runs only if all hold.
+  void condition(std::function<PassDecision()> decide);
+  /// The pass has effects outside the graph (read-back, present): never culled for
+  /// lack of readers.
+  void sideEffect(std::string why);
+
+ private:
+  friend class RenderGraph;
+  PassBuilder(RenderGraph& graph, uint32_t pass) : graph_(graph), pass_(pass) {}
+  RenderGraph& graph_;
+  uint32_t pass_;
+};
+
+class RenderGraph {
+ public:
+  RenderGraph() = default;
+  RenderGraph(const RenderGraph&) = delete;
+  RenderGraph& operator=(const RenderGraph&) = delete;
+
+  /// Adds a pass; `setup` declares its resources and returns its record callback.
+  void addPass(std::string name, Queue queue, const std::function<RecordFn(PassBuilder&)>& setup);
+
+  /// Imports persistent state owned by a plugin or the engine for this frame.
+  TextureHandle importTexture(PersistentTexture& texture);
+  BufferHandle importBuffer(PersistentBuffer& buffer);
+
+  /// Marks a version as a result of the frame (the displayed image, a requested AOV):
+  /// culling keeps exactly what these need.
+  void markOutput(TextureHandle handle, std::string why);
+  void markOutput(BufferHandle handle, std::string why);
+
+  Blackboard& blackboard() { return blackboard_; }
+  const Blackboard& blackboard() const { return blackboard_; }
+
+  /// Passes added from now on are attributed to this extension point and origin
+  /// ("engine" or a plugin name) in the report.
+  void setOrigin(std::optional<ExtensionPoint> point, std::string origin);
+  /// The view size that view-relative textures resolve against.
+  void setViewExtent(uint32_t width, uint32_t height);
+
+  CompiledGraph compile() const;
+
+  // --- introspection (executor, tests) ------------------------------------------------
+  struct Use {
+    uint32_t resource;
+    uint32_t version;  ///< the version read, or the version produced by a write
+    Access access;
+    bool write;
+    bool optional;
+  };
+  struct Pass {
+    std::string name;
+    Queue queue;
+    std::optional<ExtensionPoint> point;
+    std::string origin;
+    std::vector<Use> uses;
+    std::vector<std::function<PassDecision()>> conditions;
+    std::string sideEffect;  ///< non-empty: never culled for lack of readers
+    RecordFn record;
+    std::vector<std::string> errors;  ///< misuse found during setup; the pass is culled
+  };
+  struct Resource {
+    std::string name;
+    bool image = true;
+    TextureDesc texture;
+    BufferDesc buffer;
+    PersistentTexture* importedTexture = nullptr;
+    PersistentBuffer* importedBuffer = nullptr;
+    std::vector<int32_t> producers;  ///< per version: producing pass, or -1 (created/imported)
+    bool imported() const { return importedTexture || importedBuffer; }
+  };
+  const std::vector<Pass>& passes() const { return passes_; }
+  const std::vector<Resource>& resources() const { return resources_; }
+  uint32_t viewWidth() const { return viewWidth_; }
+  uint32_t viewHeight() const { return viewHeight_; }
+
+ private:
+  friend class PassBuilder;
+  template <class Tag>
+  ResourceHandle<Tag> use(uint32_t pass, ResourceHandle<Tag> handle, Access access, bool write,
+                          bool optional);
+  uint32_t addResource(Resource resource);
+
+  std::vector<Pass> passes_;
+  std::vector<Resource> resources_;
+  std::vector<std::pair<uint32_t, uint32_t>> outputs_;  // resource, version
+  std::vector<std::string> outputReasons_;
+  Blackboard blackboard_;
+  std::optional<ExtensionPoint> point_;
+  std::string origin_ = "engine";
+  uint32_t viewWidth_ = 1, viewHeight_ = 1;
+  friend class GraphCompiler;
+};
+
+}  // namespace bounce

@@ -1,0 +1,77 @@
+#pragma once
+// Everything a plugin may register, in one place. Each registration is tagged with the
+// plugin, so unloading removes exactly what it added.
+
+#include "bounce/config/config_stack.h"
+#include "bounce/config/console.h"
+#include "bounce/config/cvar_registry.h"
+#include "bounce/frame/pass_hooks.h"
+#include "bounce/plugin/plugin_descriptor.h"
+#include "bounce/scene/object_parameters.h"
+
+#include <string>
+
+namespace bounce {
+
+/// The engine services a plugin context forwards to.
+struct EngineServices {
+  CVarRegistry& cvars;
+  Console& console;
+  ConfigStack& config;
+  ObjectParameterRegistry& parameters;
+  PassHookRegistry& hooks;
+  DebugViewRegistry& debugViews;
+};
+
+class PluginContext {
+ public:
+  PluginContext(EngineServices& services, const PluginDescriptor& descriptor, OwnerId owner)
+      : services_(services), descriptor_(descriptor), owner_(owner) {}
+
+  const PluginDescriptor& descriptor() const { return descriptor_; }
+  OwnerId owner() const { return owner_; }
+
+  /// A console variable; with `ini` it is also a key of the plugin's ini section, with
+  /// `postProcess` also a post-process-volume setting (one declaration for all).
+  template <class T>
+  CVarRef<T> addCVar(CVarDesc<T> desc) {
+    return services_.cvars.add(std::move(desc), owner_);
+  }
+  void addConsoleCommand(ConsoleCommandDesc desc) { services_.console.addCommand(std::move(desc), owner_); }
+
+  /// A material parameter read from glTF extras (a flag when bool), e.g.
+  /// "UsedWithVxgiVoxelization"; its default is overridable in [MaterialDefaults].
+  template <class T>
+  ObjectParameter<T> addMaterialParameter(ObjectParameterDesc<T> desc) {
+    desc.kind = ObjectKind::Material;
+    return services_.parameters.declare(std::move(desc), owner_);
+  }
+  /// A light parameter, e.g. "VxgiIndirectLighting"; default in [LightDefaults].
+  template <class T>
+  ObjectParameter<T> addLightParameter(ObjectParameterDesc<T> desc) {
+    desc.kind = ObjectKind::Light;
+    return services_.parameters.declare(std::move(desc), owner_);
+  }
+
+  /// Adds passes at an extension point every frame. A GI-technique plugin's hooks run
+  /// only while it is the selected technique.
+  void addPassHook(PassHookDesc desc) {
+    services_.hooks.add(std::move(desc), owner_, descriptor_.name,
+                        descriptor_.isGlobalIllumination() ? descriptor_.name : std::string());
+  }
+  void addDebugView(DebugViewDesc desc) {
+    services_.debugViews.add(std::move(desc), owner_, descriptor_.name);
+  }
+
+  /// Read access to engine state.
+  const CVarRegistry& cvars() const { return services_.cvars; }
+  const ConfigStack& config() const { return services_.config; }
+  Console& console() { return services_.console; }
+
+ private:
+  EngineServices& services_;
+  const PluginDescriptor& descriptor_;
+  OwnerId owner_;
+};
+
+}  // namespace bounce

@@ -1,0 +1,19 @@
+#pragma once
+// The deferred renderer's own settings (console variables owned by the engine).
+
+#include "bounce/config/cvar_registry.h"
+
+namespace bounce {
+
+struct RendererSettings {
+  explicit RendererSettings(CVarRegistry& cvars);
+
+  CVarRef<int32_t> shadowMapSize;    ///< r.Shadow.MapSize: texels per side of each shadow map
+  CVarRef<float> shadowDepthBias;    ///< r.Shadow.DepthBias: in shadow-map texels
+  CVarRef<int32_t> tonemapOperator;  ///< r.Tonemap.Operator: ACES | Reinhard | Linear
+  CVarRef<float> exposure;  ///< r.Tonemap.ExposureCompensation (EV), post-process "ExposureCompensation"
+  CVarRef<float> bloomIntensity;  ///< r.Bloom.Intensity, post-process "BloomIntensity"
+  CVarRef<float> bloomThreshold;  ///< r.Bloom.Threshold, post-process "BloomThreshold"
+};
+
+}  // namespace bounce

@@ -1,0 +1,259 @@
+#include "bounce/engine.h"
+
+#include "bounce/core/log.h"
+#include "bounce/core/names.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <system_error>
+
+namespace bounce {
+namespace fs = std::filesystem;
+
+fs::path executableDirectory() {
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::current_path() : exe.parent_path();
+}
+
+namespace {
+
+fs::path defaultUserIni() {
+  if (const char* p = std::getenv("BOUNCE_USER_INI"); p && *p) return p;
+  if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x)
+    return fs::path(x) / "bounce" / "UserEngine.ini";
+  if (const char* h = std::getenv("HOME"); h && *h)
+    return fs::path(h) / ".config" / "bounce" / "UserEngine.ini";
+  return {};
+}
+
+std::optional<bool> parsePluginSwitch(std::string_view text) {
+  std::string t = toLower(text);
+  if (t == "true" || t == "1" || t == "on" || t == "yes") return true;
+  if (t == "false" || t == "0" || t == "off" || t == "no") return false;
+  return std::nullopt;
+}
+
+}  // namespace
+
+fs::path Engine::locateRoot(const fs::path& hint) const {
+  auto hasConfig = [](const fs::path& p) {
+    std::error_code ec;
+    return !p.empty() && fs::exists(p / "config" / "BaseEngine.ini", ec);
+  };
+  if (!hint.empty()) return hint;
+  if (const char* env = std::getenv("BOUNCE_ROOT"); env && hasConfig(env)) return env;
+  for (fs::path p = executableDirectory(); !p.empty(); p = p.parent_path()) {
+    if (hasConfig(p)) return p;
+    if (p == p.parent_path()) break;
+  }
+#ifdef BOUNCE_SOURCE_DIR
+  if (hasConfig(BOUNCE_SOURCE_DIR)) return BOUNCE_SOURCE_DIR;
+#endif
+  return fs::current_path();
+}
+
+Engine::Engine(EngineOptions options) {
+  root_ = locateRoot(options.root);
+
+  // 1. Configuration layers, lowest priority first.
+  config_.addFile((root_ / "config" / "BaseEngine.ini").string(), SetBy::BaseIni, true);
+  config_.addFile((root_ / "config" / "DefaultEngine.ini").string(), SetBy::DefaultIni, false);
+  userIni_ = options.userIni ? *options.userIni : defaultUserIni();
+  if (!userIni_.empty()) config_.addFile(userIni_.string(), SetBy::UserIni, false);
+  for (const std::string& ini : options.iniFiles)
+    if (!config_.addFile(ini, SetBy::UserIni, true))
+      commandLineErrors_.push_back(fmt::format("cannot use -ini {}", ini));
+
+  // 2. Plugins are discovered first so that r.GI.Technique can be validated.
+  plugins_ = std::make_unique<PluginHost>(services_);
+  std::vector<fs::path> dirs = options.pluginDirs;
+  if (options.defaultPluginDirs) {
+    if (const char* env = std::getenv("BOUNCE_PLUGIN_PATH")) {
+      std::string_view list(env);
+      while (!list.empty()) {
+        size_t colon = list.find(':');
+        if (colon) dirs.emplace_back(std::string(list.substr(0, colon)));
+        list = colon == std::string_view::npos ? std::string_view{} : list.substr(colon + 1);
+      }
+    }
+    dirs.push_back(executableDirectory().parent_path() / "plugins");
+  }
+  plugins_->discover(dirs);
+
+  // 3. Engine variables, then ini values and the command line on top of them.
+  registerEngineVariables();
+  config_.applyTo(cvars_, {"Plugins"});
+  for (const std::string& set : options.sets) {
+    size_t eq = set.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      commandLineErrors_.push_back(fmt::format("-set {}: expected NAME=VALUE", set));
+      continue;
+    }
+    SetResult r = cvars_.set(set.substr(0, eq), set.substr(eq + 1), SetBy::CommandLine, "command line");
+    if (r.status == SetResult::Status::Rejected) commandLineErrors_.push_back(r.message);
+  }
+
+  // 4. Which plugins load: descriptor default < [Plugins] < command line.
+  PluginHost::Enablement enablement;
+  if (const std::vector<std::string> keys = config_.keys("Plugins"); !keys.empty()) {
+    for (const std::string& key : keys) {
+      const ConfigStack::Value* v = config_.find("Plugins", key);
+      if (auto on = parsePluginSwitch(v->text))
+        enablement.config[toLower(key)] = *on;
+      else
+        log::warn("{}: [Plugins] {}: '{}' is not True or False", v->source, key, v->text);
+    }
+  }
+  for (const std::string& name : options.enablePlugins) enablement.commandLine[toLower(name)] = true;
+  for (const std::string& name : options.disablePlugins) enablement.commandLine[toLower(name)] = false;
+  if (!options.technique.empty()) {
+    SetResult r = cvars_.set(technique_.cvar(), options.technique, SetBy::CommandLine, "--gi");
+    if (r.status == SetResult::Status::Rejected)
+      commandLineErrors_.push_back(r.message);
+    else if (!equalsIgnoreCase(options.technique, "none"))
+      enablement.commandLine[toLower(options.technique)] = true;
+  }
+  plugins_->loadEnabled(enablement);
+  if (!options.technique.empty() && !equalsIgnoreCase(options.technique, "none") &&
+      !plugins_->isLoaded(options.technique) && plugins_->descriptor(options.technique))
+    commandLineErrors_.push_back(fmt::format("--gi {}: the plugin failed to load: {}", options.technique,
+                                             plugins_->failure(options.technique)));
+
+  reportUnclaimedSettings();
+  for (const CVarRegistry::Refused& r : cvars_.refusedDeferred())
+    if (r.value.by == SetBy::CommandLine) commandLineErrors_.push_back(r.message);
+  cvars_.markStartupComplete();
+}
+
+Engine::~Engine() {
+  // Plugins go first: their passes and resources may refer to the scene and registries.
+  plugins_->unloadAll();
+}
+
+void Engine::registerEngineVariables() {
+  allowCheats_ = cvars_.add<bool>({.name = "con.AllowCheats",
+                                   .defaultValue = true,
+                                   .help = "Allows console and command-line writes to cheat variables.",
+                                   .category = "Engine"});
+  technique_ = cvars_.add<std::string>(
+      {.name = "r.GI.Technique",
+       .defaultValue = "none",
+       .help = "Global-illumination technique: the name of a GlobalIllumination plugin, or none.",
+       .category = "Engine",
+       .validate = [this](const std::string& value) -> std::string {
+         if (equalsIgnoreCase(value, "none")) return {};
+         const PluginDescriptor* d = plugins_ ? plugins_->descriptor(value) : nullptr;
+         std::vector<std::string> names{"none"};
+         if (plugins_)
+           for (const PluginDescriptor& p : plugins_->available())
+             if (p.isGlobalIllumination()) names.push_back(p.name);
+         if (!d) return fmt::format("no GI technique '{}' (available: {})", value, fmt::join(names, ", "));
+         if (!d->isGlobalIllumination()) return fmt::format("plugin '{}' is not a GI technique", d->name);
+         return {};
+       }});
+  renderer_ = std::make_unique<RendererSettings>(cvars_);
+}
+
+void Engine::reportUnclaimedSettings() {
+  // Values for variables and keys nobody registered: typos, or settings of plugins that
+  // are not loaded (those are expected and stay quiet).
+  auto ownedByAbsentPlugin = [&](const CVarRegistry::Deferred& d) -> const PluginDescriptor* {
+    for (const PluginDescriptor& p : plugins_->available()) {
+      if (plugins_->isLoaded(p.name)) continue;
+      if (!d.section.empty() && !p.configSection.empty() && equalsIgnoreCase(d.section, p.configSection))
+        return &p;
+      if (d.section.empty() && !p.consoleVariablePrefix.empty() &&
+          startsWithIgnoreCase(d.key, p.consoleVariablePrefix))
+        return &p;
+    }
+    return nullptr;
+  };
+  for (const CVarRegistry::Deferred& d : cvars_.deferred()) {
+    if (const PluginDescriptor* p = ownedByAbsentPlugin(d)) {
+      log::debug("{}: '{}' is for plugin {}, which is not loaded", d.source, d.key, p->name);
+      continue;
+    }
+    std::string message;
+    if (d.section.empty()) {
+      message = fmt::format("unknown console variable '{}'{}", d.key, didYouMean(d.key, cvars_.names()));
+    } else if (cvars_.hasSection(d.section)) {
+      message = fmt::format("unknown key '{}' in [{}]{}", d.key, d.section,
+                            didYouMean(d.key, cvars_.keysInSection(d.section)));
+    } else {
+      std::vector<std::string> known{"SystemSettings", "Plugins"};
+      for (const CVar* c : cvars_.list())
+        if (!c->ini().empty()) known.push_back(c->ini().section);
+      message = fmt::format("unknown section [{}]{}", d.section, didYouMean(d.section, known));
+    }
+    if (d.by == SetBy::CommandLine)
+      commandLineErrors_.push_back(message);
+    else
+      log::warn("{}: {}", d.source, message);
+  }
+}
+
+bool Engine::saveSettings(std::string* error) {
+  if (userIni_.empty()) {
+    if (error) *error = "no user ini is in use";
+    return false;
+  }
+  return ConfigStack::saveChangedSettings(cvars_, userIni_.string(), error);
+}
+
+SceneExtrasSchema Engine::extrasSchema() const {
+  SceneExtrasSchema schema;
+  schema.materialKeys = parameters_.names(ObjectKind::Material);
+  schema.lightKeys = parameters_.names(ObjectKind::Light);
+  for (const CVar* c : cvars_.list())
+    if (!c->postProcessName().empty()) schema.postProcessSettings.push_back(c->postProcessName());
+  return schema;
+}
+
+GltfLoadResult Engine::loadScene(const fs::path& path) {
+  SceneExtrasSchema schema = extrasSchema();
+  GltfLoadResult result = loadGltf(path.string(), &schema);
+  if (result.scene) scene_ = std::move(result.scene);
+  return result;
+}
+
+std::string Engine::technique() const {
+  const std::string& selected = technique_.cvar().getString();
+  if (equalsIgnoreCase(selected, "none")) return "none";
+  const PluginDescriptor* d = plugins_->descriptor(selected);
+  if (d && plugins_->isLoaded(d->name)) return d->name;
+  return "none";
+}
+
+void Engine::buildFrame(RenderGraph& graph, const FrameContext& frame, const EngineStages& stages) {
+  graph.setViewExtent(frame.view.width, frame.view.height);
+  auto engineStage = [&](const std::function<void(RenderGraph&, const FrameContext&)>& stage) {
+    graph.setOrigin(std::nullopt, "engine");
+    if (stage) stage(graph, frame);
+  };
+  auto hooksAt = [&](ExtensionPoint point) {
+    for (const PassHookRegistry::Hook* hook : hooks_.at(point, frame.technique)) {
+      graph.setOrigin(point, hook->origin);
+      try {
+        hook->desc.setup(graph, frame);
+      } catch (const std::exception& e) {
+        // A failing hook loses its passes for this frame; the frame goes on without them.
+        log::error("pass hook '{}' ({}) failed: {}", hook->desc.name, hook->origin, e.what());
+      }
+    }
+  };
+  hooksAt(ExtensionPoint::FrameBegin);
+  engineStage(stages.geometry);
+  hooksAt(ExtensionPoint::AfterGBuffer);
+  hooksAt(ExtensionPoint::IndirectDiffuse);
+  hooksAt(ExtensionPoint::IndirectSpecular);
+  hooksAt(ExtensionPoint::AmbientOcclusion);
+  engineStage(stages.lighting);
+  hooksAt(ExtensionPoint::BeforePostProcess);
+  engineStage(stages.postProcess);
+  hooksAt(ExtensionPoint::DebugView);
+  engineStage(stages.output);
+}
+
+}  // namespace bounce

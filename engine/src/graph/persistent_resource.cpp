@@ -1,0 +1,39 @@
+#include "bounce/graph/persistent_resource.h"
+
+namespace bounce {
+
+PersistentTexture::PersistentTexture(std::string name, TextureDesc desc)
+    : name_(std::move(name)), desc_(desc) {}
+PersistentTexture::~PersistentTexture() = default;
+
+bool PersistentTexture::setDesc(const TextureDesc& desc) {
+  if (desc == desc_) return false;
+  desc_ = desc;
+  ++generation_;
+  // The old image is gone: the next user starts from undefined contents.
+  allocation_.reset();
+  state_ = {};
+  return true;
+}
+
+void PersistentTexture::setAllocation(std::unique_ptr<gpu::ImageAllocation> allocation) {
+  allocation_ = std::move(allocation);
+}
+
+PersistentBuffer::PersistentBuffer(std::string name, BufferDesc desc) : name_(std::move(name)), desc_(desc) {}
+PersistentBuffer::~PersistentBuffer() = default;
+
+bool PersistentBuffer::setDesc(const BufferDesc& desc) {
+  if (desc == desc_) return false;
+  desc_ = desc;
+  ++generation_;
+  allocation_.reset();
+  state_ = {};
+  return true;
+}
+
+void PersistentBuffer::setAllocation(std::unique_ptr<gpu::BufferAllocation> allocation) {
+  allocation_ = std::move(allocation);
+}
+
+}  // namespace bounce

@@ -1,0 +1,54 @@
+#include "bounce/renderer/renderer_settings.h"
+
+namespace bounce {
+
+RendererSettings::RendererSettings(CVarRegistry& cvars)
+    : shadowMapSize(
+          cvars.add<int32_t>({.name = "r.Shadow.MapSize",
+                              .defaultValue = 1024,
+                              .help = "Texels per side of each shadow map (cube faces for point lights).",
+                              .allowed = {256, 512, 1024, 2048, 4096},
+                              .category = "Renderer|Shadows"})),
+      shadowDepthBias(cvars.add<float>(
+          {.name = "r.Shadow.DepthBias",
+           .defaultValue = 1.5f,
+           .help = "Receiver depth bias in shadow-map texels (slope-scaled in the shader): removes acne "
+                   "from depth quantisation without detaching contact shadows.",
+           .min = 0.0,
+           .max = 20.0,
+           .category = "Renderer|Shadows"})),
+      tonemapOperator(
+          cvars.add<int32_t>({.name = "r.Tonemap.Operator",
+                              .defaultValue = 0,
+                              .help = "Tone-mapping curve from HDR radiance to the displayed image.",
+                              .enumNames = {"ACES", "Reinhard", "Linear"},
+                              .category = "Renderer|Post process"})),
+      exposure(cvars.add<float>(
+          {.name = "r.Tonemap.ExposureCompensation",
+           .defaultValue = 0.0f,
+           .help = "Exposure in stops (EV) applied before tone mapping; +1 doubles brightness.",
+           .min = -16.0,
+           .max = 16.0,
+           .outOfRange = RangePolicy::Clamp,
+           .postProcess = "ExposureCompensation",
+           .category = "Renderer|Post process"})),
+      bloomIntensity(
+          cvars.add<float>({.name = "r.Bloom.Intensity",
+                            .defaultValue = 0.04f,
+                            .help = "Fraction of the blurred bright light added back to the image; 0 "
+                                    "turns bloom off (its passes are culled).",
+                            .min = 0.0,
+                            .max = 10.0,
+                            .outOfRange = RangePolicy::Clamp,
+                            .postProcess = "BloomIntensity",
+                            .category = "Renderer|Post process"})),
+      bloomThreshold(cvars.add<float>({.name = "r.Bloom.Threshold",
+                                       .defaultValue = 1.0f,
+                                       .help = "Radiance (after exposure) above which light blooms.",
+                                       .min = 0.0,
+                                       .max = 1.0e4,
+                                       .outOfRange = RangePolicy::Clamp,
+                                       .postProcess = "BloomThreshold",
+                                       .category = "Renderer|Post process"})) {}
+
+}  // namespace bounce

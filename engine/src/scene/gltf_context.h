@@ -1,0 +1,42 @@
+#pragma once
+// What every part of the glTF loader shares: the parsed file, the plugins' extras
+// schema and the warnings collected so far, plus the one-line message format.
+
+#include "bounce/scene/gltf_loader.h"
+
+#include <tiny_gltf.h>
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bounce::gltf {
+
+/// Input that cannot be loaded. Thrown anywhere inside the loader and turned into
+/// GltfLoadResult::error by loadGltf, so no half-built scene ever escapes. The text is
+/// the complete one-line message, file name included.
+class LoadError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct LoadContext {
+  const tinygltf::Model& model;
+  std::string file;  ///< the path as the caller gave it; starts every message
+  const SceneExtrasSchema* schema = nullptr;
+  std::vector<std::string>& warnings;
+
+  /// Records and logs "<file>: <element>: <message>".
+  void warn(std::string_view element, std::string_view message) const;
+  /// Throws LoadError("<file>: <element>: <message>").
+  [[noreturn]] void fail(std::string_view element, std::string_view message) const;
+};
+
+/// "mesh 'Box'", or "mesh 3" when the element has no name.
+std::string elementName(std::string_view kind, int index, std::string_view name);
+
+/// "1 triangle", "3 triangles".
+std::string countOf(size_t count, std::string_view singular);
+
+}  // namespace bounce::gltf

@@ -1,0 +1,91 @@
+#include "gltf_file.h"
+
+#include "gltf_context.h"
+#include "gltf_images.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace bounce::gltf {
+namespace {
+
+/// tinygltf reports several problems as "\n"-separated text; messages here are one line.
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    if (!line.empty()) out.push_back(std::move(line));
+  }
+  return out;
+}
+
+std::string oneLine(const std::string& text) {
+  std::string out;
+  for (const std::string& line : lines(text)) out += (out.empty() ? "" : "; ") + line;
+  return out.empty() ? "unknown error" : out;
+}
+
+/// tinygltf's wording for the failures users meet most, rephrased to name what failed.
+std::string describeFailure(const std::string& error, bool binary) {
+  const std::string text = oneLine(error);
+  // A required external file that is missing or short can only be a buffer: tinygltf
+  // treats external images as optional and only warns about them.
+  if (text.find("File not found") != std::string::npos ||
+      text.find("File size mismatch") != std::string::npos ||
+      text.find("File read error") != std::string::npos || text.find("File is empty") != std::string::npos) {
+    return "buffer could not be loaded: " + text;
+  }
+  if (text.find("[json.exception") != std::string::npos) return "malformed JSON: " + text;
+  if (binary) return "invalid or truncated GLB: " + text;
+  return "invalid glTF: " + text;
+}
+
+}  // namespace
+
+void readGltfFile(const std::string& path, tinygltf::Model& model,
+                  std::vector<std::string>& tinygltfWarnings) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw LoadError(fmt::format("{}: file not found", path));
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw LoadError(fmt::format("{}: could not be read: {}", path, ec.message()));
+  if (size == 0) throw LoadError(fmt::format("{}: file is empty", path));
+  // tinygltf takes the size as unsigned int (and GLB lengths are 32-bit).
+  if (size > std::numeric_limits<unsigned int>::max()) {
+    throw LoadError(fmt::format("{}: larger than 4 GiB, which glTF loading does not support", path));
+  }
+  std::vector<unsigned char> bytes(size);
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
+    throw LoadError(fmt::format("{}: could not be read", path));
+  }
+
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&decodeImageInsideBuffers, &model);
+  const std::string baseDir = std::filesystem::path(path).parent_path().string();
+  const bool binary =
+      bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
+  std::string error, warning;
+  bool ok = false;
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), unsigned(bytes.size()),
+                                              baseDir)
+                : loader.LoadASCIIFromString(&model, &error, &warning,
+                                             reinterpret_cast<const char*>(bytes.data()),
+                                             unsigned(bytes.size()), baseDir);
+  } catch (const std::exception& e) {  // tinygltf's JSON parser may throw on odd input
+    ok = false;
+    error = e.what();
+  }
+  for (std::string& line : lines(warning)) tinygltfWarnings.push_back(std::move(line));
+  if (ok) {  // tinygltf also reports some problems it survived as errors
+    for (std::string& line : lines(error)) tinygltfWarnings.push_back(std::move(line));
+  }
+  if (!ok) throw LoadError(fmt::format("{}: {}", path, describeFailure(error, binary)));
+}
+
+}  // namespace bounce::gltf

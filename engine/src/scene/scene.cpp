@@ -1,0 +1,229 @@
+#include "bounce/scene/scene.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace bounce {
+namespace {
+
+// Enough for every edit a user makes in a few seconds of dragging in the viewer, small
+// enough (about 100 bytes each) not to matter. Older records are dropped; a pass that
+// asks for them is told to treat everything as changed.
+constexpr size_t kMaxChangeRecords = 4096;
+
+template <class T>
+void checkIndex(const std::vector<T>& items, uint32_t index, const char* what) {
+  if (index >= items.size()) {
+    throw std::out_of_range(std::string("Scene: ") + what + " index " + std::to_string(index) +
+                            " out of range (" + std::to_string(items.size()) + ")");
+  }
+}
+
+// A ranged light only reaches the box around it; an unranged one reaches everything.
+Aabb lightReach(const Light& light) {
+  Aabb box;
+  if (light.type == LightType::Directional || !(light.range > 0.0f)) {
+    box.min = glm::vec3(-std::numeric_limits<float>::infinity());
+    box.max = glm::vec3(std::numeric_limits<float>::infinity());
+    return box;
+  }
+  box.extend(light.position - glm::vec3(light.range));
+  box.extend(light.position + glm::vec3(light.range));
+  return box;
+}
+
+Aabb volumeBox(const PostProcessVolume& volume) {
+  if (volume.unbound) return {};
+  Aabb unitCube;
+  unitCube.extend(glm::vec3(-1.0f));
+  unitCube.extend(glm::vec3(1.0f));
+  return unitCube.transformed(volume.world);
+}
+
+}  // namespace
+
+std::string_view sceneChangeName(SceneChange change) {
+  switch (change) {
+    case SceneChange::Geometry:
+      return "Geometry";
+    case SceneChange::Transform:
+      return "Transform";
+    case SceneChange::Material:
+      return "Material";
+    case SceneChange::Light:
+      return "Light";
+    case SceneChange::Camera:
+      return "Camera";
+    case SceneChange::PostProcess:
+      return "PostProcess";
+    case SceneChange::Count:
+      break;
+  }
+  return "?";
+}
+
+// --- building ---------------------------------------------------------------------------
+// Every add is a Geometry change. Its record carries the world region that gained
+// something: an instance's world bounds; nothing for the other objects, which occupy
+// no space until an instance uses them.
+
+uint32_t Scene::addTexture(Texture texture) {
+  textures_.push_back(std::move(texture));
+  const auto index = uint32_t(textures_.size() - 1);
+  record(SceneChange::Geometry, index, {}, {});
+  return index;
+}
+
+uint32_t Scene::addMaterial(Material material) {
+  materials_.push_back(std::move(material));
+  const auto index = uint32_t(materials_.size() - 1);
+  record(SceneChange::Geometry, index, {}, {});
+  return index;
+}
+
+uint32_t Scene::addMesh(Mesh mesh) {
+  for (MeshPrimitive& primitive : mesh.primitives) {
+    primitive.bounds = Aabb{};
+    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(p);
+  }
+  meshes_.push_back(std::move(mesh));
+  const auto index = uint32_t(meshes_.size() - 1);
+  record(SceneChange::Geometry, index, {}, {});
+  return index;
+}
+
+uint32_t Scene::addInstance(MeshInstance instance) {
+  checkIndex(meshes_, instance.mesh, "mesh");
+  instance.worldBounds = Aabb{};
+  for (const MeshPrimitive& primitive : meshes_[instance.mesh].primitives) {
+    instance.worldBounds.extend(primitive.bounds.transformed(instance.world));
+  }
+  instances_.push_back(std::move(instance));
+  const auto index = uint32_t(instances_.size() - 1);
+  record(SceneChange::Geometry, index, {}, instances_.back().worldBounds);
+  return index;
+}
+
+uint32_t Scene::addLight(Light light) {
+  lights_.push_back(std::move(light));
+  const auto index = uint32_t(lights_.size() - 1);
+  record(SceneChange::Geometry, index, {}, {});
+  return index;
+}
+
+uint32_t Scene::addCamera(Camera camera) {
+  cameras_.push_back(std::move(camera));
+  const auto index = uint32_t(cameras_.size() - 1);
+  record(SceneChange::Geometry, index, {}, {});
+  return index;
+}
+
+uint32_t Scene::addPostProcessVolume(PostProcessVolume volume) {
+  volumes_.push_back(std::move(volume));
+  const auto index = uint32_t(volumes_.size() - 1);
+  record(SceneChange::Geometry, index, {}, {});
+  return index;
+}
+
+// --- reading ----------------------------------------------------------------------------
+
+Aabb Scene::bounds() const {
+  Aabb all;
+  for (const MeshInstance& instance : instances_) all.extend(instance.worldBounds);
+  return all;
+}
+
+// Triangles as drawn: a mesh placed by three instances counts three times.
+size_t Scene::triangleCount() const {
+  size_t count = 0;
+  for (const MeshInstance& instance : instances_) {
+    for (const MeshPrimitive& primitive : meshes_[instance.mesh].primitives) {
+      count += primitive.triangleCount();
+    }
+  }
+  return count;
+}
+
+// --- editing ----------------------------------------------------------------------------
+
+void Scene::setInstanceTransform(uint32_t instance, const glm::mat4& world) {
+  checkIndex(instances_, instance, "instance");
+  MeshInstance& target = instances_[instance];
+  const Aabb before = target.worldBounds;
+  target.world = world;
+  target.worldBounds = Aabb{};
+  for (const MeshPrimitive& primitive : meshes_[target.mesh].primitives) {
+    target.worldBounds.extend(primitive.bounds.transformed(world));
+  }
+  record(SceneChange::Transform, instance, before, target.worldBounds);
+}
+
+void Scene::editMaterial(uint32_t material, const std::function<void(Material&)>& edit) {
+  checkIndex(materials_, material, "material");
+  edit(materials_[material]);
+  // The material's surfaces did not move: before and after are the same region, the
+  // instances drawing any primitive with this material.
+  Aabb affected;
+  for (const MeshInstance& instance : instances_) {
+    const auto& primitives = meshes_[instance.mesh].primitives;
+    if (std::any_of(primitives.begin(), primitives.end(),
+                    [&](const MeshPrimitive& p) { return p.material == material; })) {
+      affected.extend(instance.worldBounds);
+    }
+  }
+  record(SceneChange::Material, material, affected, affected);
+}
+
+void Scene::editLight(uint32_t light, const std::function<void(Light&)>& edit) {
+  checkIndex(lights_, light, "light");
+  // The instances the light reaches before and after the edit (all of them for a
+  // directional or unranged light), i.e. the surfaces whose direct lighting changed.
+  auto reached = [this](const Light& l) {
+    const Aabb reach = lightReach(l);
+    Aabb out;
+    for (const MeshInstance& instance : instances_) {
+      if (reach.overlaps(instance.worldBounds)) out.extend(instance.worldBounds);
+    }
+    return out;
+  };
+  const Aabb before = reached(lights_[light]);
+  edit(lights_[light]);
+  record(SceneChange::Light, light, before, reached(lights_[light]));
+}
+
+void Scene::editCamera(uint32_t camera, const std::function<void(Camera&)>& edit) {
+  checkIndex(cameras_, camera, "camera");
+  edit(cameras_[camera]);
+  record(SceneChange::Camera, camera, {}, {});  // a camera changes no surface
+}
+
+void Scene::editPostProcessVolume(uint32_t volume, const std::function<void(PostProcessVolume&)>& edit) {
+  checkIndex(volumes_, volume, "post-process volume");
+  const Aabb before = volumeBox(volumes_[volume]);
+  edit(volumes_[volume]);
+  record(SceneChange::PostProcess, volume, before, volumeBox(volumes_[volume]));
+}
+
+// --- change tracking --------------------------------------------------------------------
+
+void Scene::record(SceneChange kind, uint32_t index, const Aabb& before, const Aabb& after) {
+  ++revision_;
+  kindRevision_[size_t(kind)] = revision_;
+  changes_.push_back(SceneChangeRecord{revision_, kind, index, before, after});
+  while (changes_.size() > kMaxChangeRecords) {
+    droppedUpTo_ = changes_.front().revision;
+    changes_.pop_front();
+  }
+}
+
+std::optional<std::vector<SceneChangeRecord>> Scene::changesSince(uint64_t revision) const {
+  if (revision < droppedUpTo_) return std::nullopt;
+  // Records are in increasing revision order, so the newer ones form a suffix.
+  auto first = std::upper_bound(changes_.begin(), changes_.end(), revision,
+                                [](uint64_t r, const SceneChangeRecord& c) { return r < c.revision; });
+  return std::vector<SceneChangeRecord>(first, changes_.end());
+}
+
+}  // namespace bounce

@@ -1,0 +1,244 @@
+// The Engine facade: configuration layers end to end, command-line errors, plugin
+// enablement from ini and command line, technique selection, settings write-back,
+// unclaimed-setting warnings and frame building around extension points.
+
+#include "bounce/engine.h"
+#include "bounce/core/log.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+
+namespace bounce {
+namespace {
+namespace fs = std::filesystem;
+
+// A throw-away project root with its own config/ files.
+class ScratchProject {
+ public:
+  ScratchProject() {
+    std::random_device rd;
+    root_ = fs::temp_directory_path() / ("bounce_engine_test_" + std::to_string(rd()));
+    fs::create_directories(root_ / "config");
+  }
+  ~ScratchProject() {
+    std::error_code ec;
+    fs::remove_all(root_, ec);
+  }
+  void write(const std::string& relative, const std::string& text) const {
+    fs::create_directories((root_ / relative).parent_path());
+    std::ofstream(root_ / relative) << text;
+  }
+  std::string read(const std::string& relative) const {
+    std::ifstream in(root_ / relative);
+    return {std::istreambuf_iterator<char>(in), {}};
+  }
+  const fs::path& root() const { return root_; }
+
+ private:
+  fs::path root_;
+};
+
+EngineOptions optionsFor(const ScratchProject& p) {
+  EngineOptions o;
+  o.root = p.root();
+  o.userIni = p.root() / "user" / "UserEngine.ini";
+  o.defaultPluginDirs = false;
+  o.pluginDirs = {BOUNCE_BINARY_DIR "/test-plugins"};
+  return o;
+}
+
+TEST(Engine, LayersIniFilesCommandLineAndConsoleWithSources) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "[SystemSettings]\ntest.Good.Value=1\n[TestGood]\n");
+  p.write("config/DefaultEngine.ini", "[TestGood]\nGoodValue=2\n");
+  p.write("user/UserEngine.ini", "[SystemSettings]\ntest.Good.Value=3\n");
+  p.write("extra.ini", "[TestGood]\nGoodValue=4\n");
+  EngineOptions o = optionsFor(p);
+  o.iniFiles = {(p.root() / "extra.ini").string()};
+  Engine e(o);
+  ASSERT_TRUE(e.plugins().isLoaded("TestGood"));  // EnabledByDefault
+  CVar* v = e.cvars().find("test.Good.Value");
+  ASSERT_NE(v, nullptr);
+  // The plugin registered its variable after the files were read: values were held and
+  // applied in priority order; -ini files sit at user priority after the user ini.
+  EXPECT_EQ(v->getInt(), 4);
+  EXPECT_EQ(v->setBy(), SetBy::UserIni);
+  EXPECT_EQ(v->setBySource(), (p.root() / "extra.ini").string() + ":2");
+
+  o.sets = {"test.Good.Value=5"};
+  Engine withSet(o);
+  EXPECT_EQ(withSet.cvars().find("test.Good.Value")->getInt(), 5);
+  EXPECT_EQ(withSet.cvars().find("test.Good.Value")->setBy(), SetBy::CommandLine);
+  EXPECT_TRUE(withSet.commandLineErrors().empty());
+  EXPECT_TRUE(withSet.console().execute("test.Good.Value 6").ok);
+  EXPECT_EQ(withSet.cvars().find("test.Good.Value")->setBy(), SetBy::Console);
+}
+
+TEST(Engine, CommandLineMistakesAreErrorsTheAppExitsOn) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "[SystemSettings]\n");
+  EngineOptions o = optionsFor(p);
+  o.sets = {"test.Good.Valeu=1", "test.Good.Value=abc", "novalue"};
+  o.iniFiles = {(p.root() / "missing.ini").string()};
+  Engine e(o);
+  const auto& errors = e.commandLineErrors();
+  ASSERT_EQ(errors.size(), 4u);
+  std::string all;
+  for (const auto& s : errors) all += s + "\n";
+  EXPECT_NE(all.find("cannot use -ini"), std::string::npos) << all;
+  EXPECT_NE(all.find("-set novalue: expected NAME=VALUE"), std::string::npos) << all;
+  EXPECT_NE(all.find("test.Good.Value: 'abc' is not an integer"), std::string::npos) << all;
+  EXPECT_NE(all.find("unknown console variable 'test.Good.Valeu' (did you mean 'test.Good.Value'"),
+            std::string::npos)
+      << all;
+}
+
+TEST(Engine, UnknownIniKeysWarnWithTheClosestKeyButAbsentPluginsStayQuiet) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini",
+          "[TestGood]\nGodValue=1\n[Nonsense]\nX=1\n[SystemSettings]\nr.Nope=1\n[Plugins]\nTestGood=True\n");
+  log::Capture capture;
+  Engine e(optionsFor(p));
+  std::string base = (p.root() / "config" / "BaseEngine.ini").string();
+  EXPECT_TRUE(capture.contains(base + ":2: unknown key 'GodValue' in [TestGood] (did you mean 'GoodValue'?)"))
+      << capture.joined();
+  EXPECT_TRUE(capture.contains(base + ":4: unknown section [Nonsense]")) << capture.joined();
+  EXPECT_TRUE(capture.contains(base + ":6: unknown console variable 'r.Nope'")) << capture.joined();
+
+  // With TestGood disabled its section is expected to be unclaimed: no warning.
+  p.write("config/BaseEngine.ini", "[TestGood]\nGoodValue=1\n[Plugins]\nTestGood=False\n");
+  log::Capture quiet;
+  Engine off(optionsFor(p));
+  EXPECT_FALSE(off.plugins().isLoaded("TestGood"));
+  EXPECT_EQ(quiet.count(log::Level::Warning), 0u) << quiet.joined();
+}
+
+TEST(Engine, PluginsSectionAndCommandLineEnableAndDisable) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "[Plugins]\nTestGood=False\nTestDependent=True\n");
+  {
+    Engine e(optionsFor(p));  // TestDependent needs the disabled TestGood
+    EXPECT_FALSE(e.plugins().isLoaded("TestGood"));
+    EXPECT_FALSE(e.plugins().isLoaded("TestDependent"));
+  }
+  EngineOptions o = optionsFor(p);
+  o.enablePlugins = {"TestGood"};
+  Engine e(o);
+  EXPECT_TRUE(e.plugins().isLoaded("TestGood"));
+  EXPECT_TRUE(e.plugins().isLoaded("TestDependent"));
+  o.enablePlugins = {};
+  o.disablePlugins = {"TestDependent"};
+  p.write("config/BaseEngine.ini", "[Plugins]\n");
+  Engine d(o);
+  EXPECT_TRUE(d.plugins().isLoaded("TestGood"));
+  EXPECT_FALSE(d.plugins().isLoaded("TestDependent"));
+}
+
+TEST(Engine, TechniqueSelection) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "[Plugins]\nTestGood=False\n");
+  EngineOptions o = optionsFor(p);
+  {
+    Engine none(o);
+    EXPECT_EQ(none.technique(), "none");
+  }
+  o.technique = "testgood";  // enables the plugin, names are case-insensitive
+  Engine e(o);
+  EXPECT_TRUE(e.plugins().isLoaded("TestGood"));
+  EXPECT_EQ(e.technique(), "TestGood");
+  EXPECT_TRUE(e.console().execute("r.GI.Technique none").ok);
+  EXPECT_EQ(e.technique(), "none");
+  ConsoleResult bad = e.console().execute("r.GI.Technique TestDependent");
+  EXPECT_FALSE(bad.ok);
+  EXPECT_NE(bad.text().find("is not a GI technique"), std::string::npos) << bad.text();
+
+  o.technique = "Voxels";
+  Engine unknown(o);
+  ASSERT_EQ(unknown.commandLineErrors().size(), 1u);
+  EXPECT_NE(unknown.commandLineErrors()[0].find("no GI technique 'Voxels' (available: none, TestGood)"),
+            std::string::npos)
+      << unknown.commandLineErrors()[0];
+}
+
+TEST(Engine, SavesConsoleChangesToTheUserIniKeepingComments) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "[SystemSettings]\n");
+  p.write("user/UserEngine.ini", "; my settings\n[SystemSettings]\n; keep me\ncon.AllowCheats=true\n");
+  {
+    Engine e(optionsFor(p));
+    e.console().execute("test.Good.Value 42");
+    e.console().execute("con.AllowCheats 0");
+    std::string error;
+    ASSERT_TRUE(e.saveSettings(&error)) << error;
+  }
+  std::string text = p.read("user/UserEngine.ini");
+  EXPECT_EQ(text,
+            "; my settings\n[SystemSettings]\n; keep me\ncon.AllowCheats=false\n\n[TestGood]\nGoodValue=42\n")
+      << text;
+  Engine again(optionsFor(p));
+  EXPECT_EQ(again.cvars().find("test.Good.Value")->getInt(), 42);
+  EXPECT_EQ(again.cvars().find("test.Good.Value")->setBy(), SetBy::UserIni);
+}
+
+TEST(Engine, ExtrasSchemaListsWhatPluginsDeclared) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "");
+  Engine e(optionsFor(p));
+  SceneExtrasSchema s = e.extrasSchema();
+  EXPECT_NE(std::find(s.materialKeys.begin(), s.materialKeys.end(), "UsedWithTestGood"),
+            s.materialKeys.end());
+  EXPECT_NE(std::find(s.lightKeys.begin(), s.lightKeys.end(), "TestGoodLight"), s.lightKeys.end());
+  EXPECT_NE(std::find(s.postProcessSettings.begin(), s.postProcessSettings.end(), "GoodValue"),
+            s.postProcessSettings.end());
+}
+
+TEST(Engine, BuildFrameInterleavesEngineStagesAndHooksInExtensionPointOrder) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "");
+  EngineOptions o = optionsFor(p);
+  o.technique = "TestGood";
+  Engine e(o);
+  std::vector<std::string> calls;
+  auto hook = [&](ExtensionPoint point, int order, std::string name) {
+    e.hooks().add({.name = name,
+                   .point = point,
+                   .order = order,
+                   .setup = [&calls, name](RenderGraph&, const FrameContext&) { calls.push_back(name); }},
+                  kEngineOwner, "test", "");
+  };
+  hook(ExtensionPoint::DebugView, 0, "debug");
+  hook(ExtensionPoint::FrameBegin, 0, "begin");
+  hook(ExtensionPoint::AfterGBuffer, 1, "afterG.1");
+  hook(ExtensionPoint::AfterGBuffer, -1, "afterG.-1");
+  hook(ExtensionPoint::AmbientOcclusion, 0, "ao");
+  hook(ExtensionPoint::BeforePostProcess, 0, "beforePost");
+  e.hooks().add({.name = "throws",
+                 .point = ExtensionPoint::IndirectSpecular,
+                 .setup = [](RenderGraph&, const FrameContext&) { throw std::runtime_error("boom"); }},
+                kEngineOwner, "test", "");
+  EngineStages stages;
+  stages.geometry = [&](RenderGraph&, const FrameContext&) { calls.push_back("GEOMETRY"); };
+  stages.lighting = [&](RenderGraph&, const FrameContext&) { calls.push_back("LIGHTING"); };
+  stages.postProcess = [&](RenderGraph&, const FrameContext&) { calls.push_back("POST"); };
+  stages.output = [&](RenderGraph&, const FrameContext&) { calls.push_back("OUTPUT"); };
+
+  Scene scene;
+  FrameView view = FrameView::fromCamera(Camera{}, 32, 32);
+  PostProcessSettings pp = PostProcessSettings::blend(scene, e.cvars(), view.position);
+  FrameContext frame{scene, e.cvars(), view, pp, 0, e.technique()};
+  RenderGraph graph;
+  log::Capture capture;
+  e.buildFrame(graph, frame, stages);
+  EXPECT_EQ(calls, (std::vector<std::string>{"begin", "GEOMETRY", "afterG.-1", "afterG.1", "ao", "LIGHTING",
+                                             "beforePost", "POST", "debug", "OUTPUT"}));
+  EXPECT_TRUE(capture.contains("pass hook 'throws' (test) failed: boom")) << capture.joined();
+  // TestGood's own hook ran at IndirectDiffuse and its pass carries its origin.
+  ASSERT_EQ(graph.passes().size(), 1u);
+  EXPECT_EQ(graph.passes()[0].origin, "TestGood");
+  EXPECT_EQ(graph.passes()[0].point, ExtensionPoint::IndirectDiffuse);
+}
+
+}  // namespace
+}  // namespace bounce

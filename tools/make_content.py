@@ -1,0 +1,394 @@
+#!/usr/bin/env python3
+"""Writes Bounce's committed glTF scenes to content/ (standard library only).
+
+    python3 tools/make_content.py            # writes into <repo>/content
+    python3 tools/make_content.py --out DIR  # writes somewhere else
+
+Every scene is one self-contained .gltf file: its buffer is embedded as a base64 data
+URI. Units are metres and radiometric light units (W/sr for point lights, W/m^2 for
+directional lights, W/(m^2 sr) for emission), as Bounce's scene model expects.
+"""
+
+import argparse
+import base64
+import json
+import math
+import os
+import struct
+
+# --- scene parameters -------------------------------------------------------------------
+
+# Cornell box: interior x in [-1, 1], y in [0, 2], z in [-1, 1], open towards +z.
+WALL_THICKNESS = 0.05          # m; solid walls, so voxelization sees them as closed
+WHITE = (0.73, 0.73, 0.73)     # albedo of floor, ceiling, back wall, tall box and sphere
+RED = (0.63, 0.065, 0.05)      # left wall (-x)
+GREEN = (0.14, 0.45, 0.091)    # right wall (+x)
+TALL_BOX_SIZE = (0.6, 1.2, 0.6)        # m
+TALL_BOX_CENTER = (-0.35, 0.6, -0.35)  # back left, standing on the floor
+TALL_BOX_YAW_DEGREES = 17.0
+SPHERE_RADIUS = 0.35                   # m
+SPHERE_CENTER = (0.45, 0.35, 0.35)     # front right, resting on the floor
+SPHERE_ROUGHNESS = 0.3                 # glossy: default specular (F0 = 0.04), GGX
+SPHERE_SEGMENTS = 32                   # around the vertical axis
+SPHERE_RINGS = 16                      # pole to pole
+CORNELL_LIGHT_POSITION = (0.0, 1.85, 0.0)
+CORNELL_LIGHT_INTENSITY = 15.0         # W/sr
+CORNELL_LIGHT_COLOR = (1.0, 0.95, 0.85)
+CORNELL_CAMERA_POSITION = (0.0, 1.0, 3.9)  # looking down -z
+CORNELL_CAMERA_YFOV = 0.6911               # rad (39.6 degrees): the box just fills the view
+CAMERA_ZNEAR = 0.05                        # m; no zfar: infinite far plane
+
+# Flags read by the VXGI plugin (plugin-declared object parameters).
+VOXELIZE_FLAG = {"UsedWithVxgiVoxelization": True}
+INDIRECT_LIGHT_FLAG = {"VxgiIndirectLighting": True}
+
+# Renderer test scenes (content/tests/). All Lambert (specularFactor 0) unless noted.
+TEST_PLANE_SIZE = 4.0              # m, square, at y = 0
+TEST_PLANE_ALBEDO = 0.5
+TEST_DIRECTIONAL_IRRADIANCE = 2.0  # W/m^2 on a surface facing the light
+TEST_POINT_INTENSITY = 4.0         # W/sr
+TEST_POINT_HEIGHT = 1.0            # m above the plane centre
+TEST_OCCLUDER_SIZE = 1.0           # m, square
+TEST_OCCLUDER_HEIGHT = 0.5         # m, between the point light and the plane
+TEST_OCCLUDER_THICKNESS = 0.02     # m
+TEST_CAMERA_HEIGHT = 2.0           # m; with yfov 0.8 the 4 m plane fills even a 16:9 view
+TEST_CAMERA_YFOV = 0.8             # rad
+EMISSIVE_QUAD_COLOR = (1.0, 0.5, 0.25)
+EMISSIVE_QUAD_STRENGTH = 2.0       # KHR_materials_emissive_strength
+EMISSIVE_QUAD_SIZE = 1.0           # m
+FURNACE_ALBEDO = 0.5               # white furnace: expected radiance E / (1 - albedo) = 2
+FURNACE_EMISSION = (1.0, 1.0, 1.0)
+ROOM_SIZE = 2.0                    # m, white furnace and each of the two rooms
+THIN_WALL_THICKNESS = 0.02         # m, between the two rooms
+TWO_ROOMS_ALBEDO = 0.73
+TWO_ROOMS_LIGHT_INTENSITY = 10.0   # W/sr, in the left room only
+
+# --- glTF constants ---------------------------------------------------------------------
+
+FLOAT, UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5123, 5125
+ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
+
+
+# --- geometry ---------------------------------------------------------------------------
+
+def add(a, b):
+    return tuple(x + y for x, y in zip(a, b))
+
+
+def sub(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+def scale(a, s):
+    return tuple(x * s for x in a)
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def normalize(a):
+    length = math.sqrt(dot(a, a))
+    return scale(a, 1.0 / length)
+
+
+class Geometry:
+    """An indexed triangle list with per-vertex normals (counter-clockwise front faces)."""
+
+    def __init__(self):
+        self.positions, self.normals, self.indices = [], [], []
+
+    def quad(self, center, u, v):
+        """Rectangle center +- u +- v, facing cross(u, v)."""
+        n = normalize(cross(u, v))
+        base = len(self.positions)
+        for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+            self.positions.append(add(center, add(scale(u, su), scale(v, sv))))
+            self.normals.append(n)
+        self.indices += [base, base + 1, base + 2, base, base + 2, base + 3]
+        return self
+
+    def box(self, size, center=(0.0, 0.0, 0.0)):
+        """Axis-aligned box, faces pointing out (flat normals, 24 vertices)."""
+        hx, hy, hz = (s / 2 for s in size)
+        x, y, z = (hx, 0, 0), (0, hy, 0), (0, 0, hz)
+        for offset, u, v in ((x, y, z), (scale(x, -1), z, y), (y, z, x), (scale(y, -1), x, z),
+                             (z, x, y), (scale(z, -1), y, x)):
+            self.quad(add(center, offset), u, v)
+        return self
+
+    def uv_sphere(self, radius, segments, rings):
+        """Sphere around the origin with smooth normals; pole triangles of zero area are left out."""
+        base = len(self.positions)
+        for i in range(rings + 1):
+            theta = math.pi * i / rings
+            for j in range(segments + 1):
+                phi = 2 * math.pi * j / segments
+                n = (math.sin(theta) * math.cos(phi), math.cos(theta), math.sin(theta) * math.sin(phi))
+                self.normals.append(n)
+                self.positions.append(scale(n, radius))
+        row = segments + 1
+        for i in range(rings):
+            for j in range(segments):
+                a, b, c, d = i * row + j, (i + 1) * row + j, (i + 1) * row + j + 1, i * row + j + 1
+                for tri in ((a, b, c), (a, c, d)):
+                    p = [self.positions[base + k] for k in tri]
+                    n = cross(sub(p[1], p[0]), sub(p[2], p[0]))
+                    if dot(n, n) < 1e-12:  # the collapsed corner at a pole
+                        continue
+                    centroid = scale(add(add(p[0], p[1]), p[2]), 1 / 3)
+                    if dot(n, centroid) < 0:  # wind counter-clockwise seen from outside
+                        tri = (tri[0], tri[2], tri[1])
+                    self.indices += [base + t for t in tri]
+        return self
+
+
+def yaw_quaternion(degrees):
+    half = math.radians(degrees) / 2
+    return [0.0, math.sin(half), 0.0, math.cos(half)]
+
+
+# Rotates -Z (where cameras look and lights point) to -Y: straight down.
+LOOK_DOWN = [-math.sqrt(0.5), 0.0, 0.0, math.sqrt(0.5)]
+
+
+# --- glTF writing -----------------------------------------------------------------------
+
+class GltfScene:
+    def __init__(self, generator_note):
+        self.bin = bytearray()
+        self.doc = {
+            "asset": {"version": "2.0", "generator": "Bounce tools/make_content.py", "extras": {"note": generator_note}},
+            "scene": 0,
+            "scenes": [{"nodes": []}],
+            "nodes": [], "meshes": [], "materials": [], "accessors": [], "bufferViews": [], "buffers": [],
+        }
+        self.extensions = set()
+
+    def _view(self, data, target):
+        while len(self.bin) % 4:
+            self.bin.append(0)
+        self.doc["bufferViews"].append(
+            {"buffer": 0, "byteOffset": len(self.bin), "byteLength": len(data), "target": target})
+        self.bin += data
+        return len(self.doc["bufferViews"]) - 1
+
+    def _accessor(self, view, component_type, count, kind, **extra):
+        self.doc["accessors"].append(
+            {"bufferView": view, "componentType": component_type, "count": count, "type": kind, **extra})
+        return len(self.doc["accessors"]) - 1
+
+    def material(self, name, color, roughness=1.0, metallic=0.0, lambert=True, emissive=None,
+                 emissive_strength=None, extras=None):
+        m = {"name": name,
+             "pbrMetallicRoughness": {"baseColorFactor": [*color, 1.0], "metallicFactor": metallic,
+                                      "roughnessFactor": roughness}}
+        ext = {}
+        if lambert:  # no specular lobe: the BRDF is pure Lambert
+            ext["KHR_materials_specular"] = {"specularFactor": 0.0}
+        if emissive is not None:
+            m["emissiveFactor"] = list(emissive)
+        if emissive_strength is not None:
+            ext["KHR_materials_emissive_strength"] = {"emissiveStrength": emissive_strength}
+        if ext:
+            m["extensions"] = ext
+            self.extensions.update(ext)
+        if extras:
+            m["extras"] = dict(extras)
+        self.doc["materials"].append(m)
+        return len(self.doc["materials"]) - 1
+
+    def mesh(self, name, geometry, material):
+        pos, nrm, idx = geometry.positions, geometry.normals, geometry.indices
+        pos_view = self._view(b"".join(struct.pack("<3f", *p) for p in pos), ARRAY_BUFFER)
+        nrm_view = self._view(b"".join(struct.pack("<3f", *n) for n in nrm), ARRAY_BUFFER)
+        wide = len(pos) > 65535
+        idx_view = self._view(struct.pack("<%d%s" % (len(idx), "I" if wide else "H"), *idx), ELEMENT_ARRAY_BUFFER)
+        lo = [min(p[i] for p in pos) for i in range(3)]
+        hi = [max(p[i] for p in pos) for i in range(3)]
+        primitive = {
+            "attributes": {"POSITION": self._accessor(pos_view, FLOAT, len(pos), "VEC3", min=lo, max=hi),
+                           "NORMAL": self._accessor(nrm_view, FLOAT, len(nrm), "VEC3")},
+            "indices": self._accessor(idx_view, UNSIGNED_INT if wide else UNSIGNED_SHORT, len(idx), "SCALAR"),
+            "material": material, "mode": 4}
+        self.doc["meshes"].append({"name": name, "primitives": [primitive]})
+        return len(self.doc["meshes"]) - 1
+
+    def node(self, name, translation=None, rotation=None, scale_=None, **fields):
+        node = {"name": name}
+        if translation is not None:
+            node["translation"] = list(translation)
+        if rotation is not None:
+            node["rotation"] = list(rotation)
+        if scale_ is not None:
+            node["scale"] = list(scale_)
+        node.update(fields)
+        self.doc["nodes"].append(node)
+        self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
+        return len(self.doc["nodes"]) - 1
+
+    def object(self, name, geometry, material, translation=None, rotation=None):
+        return self.node(name, translation, rotation, mesh=self.mesh(name, geometry, material))
+
+    def camera(self, name, translation, rotation=None, yfov=0.8):
+        self.doc.setdefault("cameras", []).append(
+            {"name": name, "type": "perspective", "perspective": {"yfov": yfov, "znear": CAMERA_ZNEAR}})
+        return self.node(name, translation, rotation, camera=len(self.doc["cameras"]) - 1)
+
+    def light(self, name, kind, intensity, translation=None, rotation=None, color=(1.0, 1.0, 1.0), extras=None):
+        lights = self.doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})["lights"]
+        light = {"name": name, "type": kind, "color": list(color), "intensity": intensity}
+        if extras:
+            light["extras"] = dict(extras)
+        lights.append(light)
+        self.extensions.add("KHR_lights_punctual")
+        return self.node(name, translation, rotation, extensions={"KHR_lights_punctual": {"light": len(lights) - 1}})
+
+    def write(self, path):
+        doc = dict(self.doc)
+        doc["buffers"] = [{"byteLength": len(self.bin),
+                           "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(self.bin)).decode()}]
+        if self.extensions:
+            doc["extensionsUsed"] = sorted(self.extensions)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(doc, f, indent=1)
+            f.write("\n")
+        print("wrote", path)
+
+
+# --- scenes -----------------------------------------------------------------------------
+
+def cornell_box(flagged):
+    """The Cornell box; `flagged` adds the VXGI extras flags to materials and the light."""
+    t = WALL_THICKNESS
+    material_flags = VOXELIZE_FLAG if flagged else None
+    s = GltfScene("Cornell box" + ("" if flagged else " without plugin flags"))
+    white = s.material("White", WHITE, extras=material_flags)
+    red = s.material("Red", RED, extras=material_flags)
+    green = s.material("Green", GREEN, extras=material_flags)
+    glossy = s.material("GlossyWhite", WHITE, roughness=SPHERE_ROUGHNESS, lambert=False, extras=material_flags)
+
+    s.object("Floor", Geometry().box((2 + 2 * t, t, 2 + t)), white, (0, -t / 2, -t / 2))
+    s.object("Ceiling", Geometry().box((2 + 2 * t, t, 2 + t)), white, (0, 2 + t / 2, -t / 2))
+    s.object("BackWall", Geometry().box((2 + 2 * t, 2, t)), white, (0, 1, -1 - t / 2))
+    s.object("LeftWall", Geometry().box((t, 2, 2)), red, (-1 - t / 2, 1, 0))
+    s.object("RightWall", Geometry().box((t, 2, 2)), green, (1 + t / 2, 1, 0))
+    s.object("TallBox", Geometry().box(TALL_BOX_SIZE), white, TALL_BOX_CENTER, yaw_quaternion(TALL_BOX_YAW_DEGREES))
+    s.object("Sphere", Geometry().uv_sphere(SPHERE_RADIUS, SPHERE_SEGMENTS, SPHERE_RINGS), glossy, SPHERE_CENTER)
+
+    s.light("CeilingLight", "point", CORNELL_LIGHT_INTENSITY, CORNELL_LIGHT_POSITION, color=CORNELL_LIGHT_COLOR,
+            extras=INDIRECT_LIGHT_FLAG if flagged else None)
+    s.camera("Main", CORNELL_CAMERA_POSITION, yfov=CORNELL_CAMERA_YFOV)
+    s.node("PostProcessVolume", (0, 1, 0), scale_=(1 + t, 1 + t, 1 + t), extras={"PostProcessVolume": {
+        "Priority": 0, "BlendRadius": 1.0, "Unbound": True, "Settings": {"ExposureCompensation": 0.0}}})
+    return s
+
+
+def lambert_plane(note):
+    s = GltfScene(note)
+    gray = s.material("Gray", (TEST_PLANE_ALBEDO,) * 3)
+    h = TEST_PLANE_SIZE / 2
+    s.object("Plane", Geometry().quad((0, 0, 0), (0, 0, h), (h, 0, 0)), gray)
+    s.camera("Top", (0, TEST_CAMERA_HEIGHT, 0), LOOK_DOWN, TEST_CAMERA_YFOV)
+    return s, gray
+
+
+def lambert_plane_directional():
+    s, _ = lambert_plane("4 m Lambert plane lit straight from above by a directional light")
+    s.light("Sun", "directional", TEST_DIRECTIONAL_IRRADIANCE, rotation=LOOK_DOWN)
+    return s
+
+
+def lambert_plane_point(occluded):
+    note = "4 m Lambert plane under a point light" + (" with an occluder half way" if occluded else "")
+    s, gray = lambert_plane(note)
+    s.light("Bulb", "point", TEST_POINT_INTENSITY, (0, TEST_POINT_HEIGHT, 0))
+    if occluded:
+        size = (TEST_OCCLUDER_SIZE, TEST_OCCLUDER_THICKNESS, TEST_OCCLUDER_SIZE)
+        s.object("Occluder", Geometry().box(size), gray, (0, TEST_OCCLUDER_HEIGHT, 0))
+    return s
+
+
+def emissive_quad():
+    s = GltfScene("emissive quad facing +z, no lights")
+    h = EMISSIVE_QUAD_SIZE / 2
+    glow = s.material("Glow", (0.0, 0.0, 0.0), emissive=EMISSIVE_QUAD_COLOR,
+                      emissive_strength=EMISSIVE_QUAD_STRENGTH)
+    s.object("Quad", Geometry().quad((0, 0, 0), (h, 0, 0), (0, h, 0)), glow)
+    s.camera("Front", (0, 0, 2.0), yfov=TEST_CAMERA_YFOV)
+    return s
+
+
+def closed_room(x_min, x_max, thickness, skip_walls=()):
+    """Solid walls around the interior x in [x_min, x_max], y in [0, ROOM_SIZE], z in +-ROOM_SIZE/2."""
+    t, h, w = thickness, ROOM_SIZE, x_max - x_min
+    cx, hz = (x_min + x_max) / 2, ROOM_SIZE / 2
+    walls = {
+        "Floor": ((w + 2 * t, t, h + 2 * t), (cx, -t / 2, 0)),
+        "Ceiling": ((w + 2 * t, t, h + 2 * t), (cx, h + t / 2, 0)),
+        "Back": ((w, h, t), (cx, h / 2, -hz - t / 2)),
+        "Front": ((w, h, t), (cx, h / 2, hz + t / 2)),
+        "Left": ((t, h, h + 2 * t), (x_min - t / 2, h / 2, 0)),
+        "Right": ((t, h, h + 2 * t), (x_max + t / 2, h / 2, 0)),
+    }
+    for name, (size, center) in walls.items():
+        if name not in skip_walls:
+            yield name, Geometry().box(size), center
+
+
+def white_furnace():
+    s = GltfScene("closed emissive room of albedo 0.5: every surface sees radiance 2")
+    wall = s.material("FurnaceWall", (FURNACE_ALBEDO,) * 3, emissive=FURNACE_EMISSION, extras=VOXELIZE_FLAG)
+    r = ROOM_SIZE / 2
+    for name, geometry, center in closed_room(-r, r, WALL_THICKNESS):
+        s.object(name, geometry, wall, center)
+    s.camera("Centre", (0, r, 0), yfov=1.2)
+    return s
+
+
+def two_rooms_thin_wall():
+    s = GltfScene("two closed rooms sharing a 2 cm wall; light only in the left one")
+    wall = s.material("Wall", (TWO_ROOMS_ALBEDO,) * 3, extras=VOXELIZE_FLAG)
+    gap = THIN_WALL_THICKNESS / 2
+    # Left room x in [-2.01, -0.01], right room x in [0.01, 2.01]; the shared wall is
+    # the only thing between them.
+    for prefix, lo, hi in (("LeftRoom", -gap - ROOM_SIZE, -gap), ("RightRoom", gap, gap + ROOM_SIZE)):
+        for name, geometry, center in closed_room(lo, hi, WALL_THICKNESS, skip_walls=("Left", "Right")):
+            s.object(prefix + name, geometry, wall, center)
+    t = WALL_THICKNESS
+    s.object("OuterWallLeft", Geometry().box((t, ROOM_SIZE, ROOM_SIZE + 2 * t)), wall,
+             (-gap - ROOM_SIZE - t / 2, ROOM_SIZE / 2, 0))
+    s.object("OuterWallRight", Geometry().box((t, ROOM_SIZE, ROOM_SIZE + 2 * t)), wall,
+             (gap + ROOM_SIZE + t / 2, ROOM_SIZE / 2, 0))
+    s.object("ThinWall", Geometry().box((THIN_WALL_THICKNESS, ROOM_SIZE, ROOM_SIZE + 2 * t)), wall,
+             (0, ROOM_SIZE / 2, 0))
+    s.light("LeftRoomLight", "point", TWO_ROOMS_LIGHT_INTENSITY, (-gap - ROOM_SIZE / 2, ROOM_SIZE * 0.75, 0),
+            extras=INDIRECT_LIGHT_FLAG)
+    # Inside the dark room, looking straight down: the view holds only its floor.
+    s.camera("DarkRoom", (gap + ROOM_SIZE / 2, ROOM_SIZE * 0.75, 0), LOOK_DOWN, yfov=1.0)
+    return s
+
+
+def main():
+    repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default=os.path.join(repo, "content"), help="content folder to write into")
+    out = parser.parse_args().out
+    tests = os.path.join(out, "tests")
+    cornell_box(flagged=True).write(os.path.join(out, "cornell_box.gltf"))
+    lambert_plane_directional().write(os.path.join(tests, "lambert_plane_directional.gltf"))
+    lambert_plane_point(occluded=False).write(os.path.join(tests, "lambert_plane_point.gltf"))
+    lambert_plane_point(occluded=True).write(os.path.join(tests, "shadowed_plane_point.gltf"))
+    emissive_quad().write(os.path.join(tests, "emissive_quad.gltf"))
+    white_furnace().write(os.path.join(tests, "white_furnace.gltf"))
+    two_rooms_thin_wall().write(os.path.join(tests, "two_rooms_thin_wall.gltf"))
+    cornell_box(flagged=False).write(os.path.join(tests, "no_flagged_materials.gltf"))
+
+
+if __name__ == "__main__":
+    main()
