@@ -218,3 +218,23 @@ TEST(Content, TwoRoomsShareOneThinWall) {
 
 }  // namespace
 }  // namespace bounce
+
+namespace bounce {
+namespace {
+
+TEST(Content, UnknownExtrasKeyIsReportedOncePerKeyNotPerMaterial) {
+  // With no plugin declaring the VXGI flags, the four flagged materials give one line.
+  SceneExtrasSchema schema{.materialKeys = {"ReceivesAmbient"}, .lightKeys = {}, .postProcessSettings = {}};
+  GltfLoadResult r = loadGltf(std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box.gltf", &schema);
+  ASSERT_TRUE(r.scene) << r.error;
+  size_t materialLines = 0;
+  for (const std::string& w : r.warnings)
+    if (w.find("unknown extras key 'UsedWithVxgiVoxelization'") != std::string::npos) {
+      ++materialLines;
+      EXPECT_NE(w.find("material 'White', material 'Red', material 'Green' and 1 more"), std::string::npos) << w;
+    }
+  EXPECT_EQ(materialLines, 1u);
+}
+
+}  // namespace
+}  // namespace bounce

@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -29,6 +30,16 @@ struct LoadContext {
 
   /// Records and logs "<file>: <element>: <message>".
   void warn(std::string_view element, std::string_view message) const;
+
+  /// Extras keys no plugin declared, with the elements carrying them. Reported once per
+  /// key after loading (a scene flags every material alike, so one line per material
+  /// would bury the message).
+  struct UnknownKey {
+    std::string message;                ///< "unknown extras key 'X' (did you mean 'Y'?)"
+    std::vector<std::string> elements;  ///< "material 'White'", ...
+  };
+  mutable std::map<std::string, UnknownKey> unknownKeys;  ///< by "<kind>\n<key>"
+  void reportUnknownKeys() const;
   /// Throws LoadError("<file>: <element>: <message>").
   [[noreturn]] void fail(std::string_view element, std::string_view message) const;
 };

@@ -39,8 +39,10 @@ ObjectParameterValues parametersFromExtras(const LoadContext& ctx, const tinyglt
   for (const std::string& key : extras.Keys()) {
     const tinygltf::Value& v = extras.Get(key);
     if (known && std::find(known->begin(), known->end(), key) == known->end()) {
-      ctx.warn(element, fmt::format("unknown extras key '{}'{}; no loaded plugin declares this {} parameter",
-                                    key, suggestion(key, *known), toLower(objectKindName(kind))));
+      auto& entry = ctx.unknownKeys[fmt::format("{}\n{}", objectKindName(kind), key)];
+      entry.message = fmt::format("unknown extras key '{}'{}; no loaded plugin declares this {} parameter", key,
+                                  suggestion(key, *known), toLower(objectKindName(kind)));
+      entry.elements.push_back(std::string(element));
     }
     if (v.IsBool()) {
       values.set(key, v.Get<bool>());

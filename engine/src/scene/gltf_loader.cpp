@@ -60,6 +60,7 @@ std::unique_ptr<Scene> buildScene(const gltf::LoadContext& ctx, const std::strin
 
   gltf::SceneMeshes sceneMeshes(*scene, std::move(meshIndices));
   gltf::placeNodes(ctx, *scene, sceneMeshes);
+  ctx.reportUnknownKeys();
   return scene;
 }
 

@@ -2,11 +2,11 @@
 // The engine console: the one place that turns a typed line into a variable write, a
 // query or a command. The viewer's console panel, `--script` files and tests all use it.
 //
-//   r.VXGI.DebugMode 2     set (also `r.VXGI.DebugMode=2`)
-//   r.VXGI.DebugMode       print value, set-by and help
-//   r.VXGI.DebugMode ?     print help, type, range and set-by
-//   help r.VXGI            list variables and commands with that prefix
-//   r.VXGI                 a prefix of several names lists them too
+//   r.Ambient.DebugMode 1     set (also `r.Ambient.DebugMode=1`)
+//   r.Ambient.DebugMode       print value, set-by and help
+//   r.Ambient.DebugMode ?     print help, type, range and set-by
+//   help r.Ambient            list variables and commands with that prefix
+//   r.Ambient                 a prefix of several names lists them too
 
 #include "bounce/config/cvar_registry.h"
 #include "bounce/core/owner.h"
@@ -26,7 +26,7 @@ struct ConsoleResult {
 };
 
 struct ConsoleCommandDesc {
-  std::string name;  ///< e.g. "vxgi.Revoxelize"
+  std::string name;  ///< e.g. "ambient.Status"
   std::string help;
   /// Receives the arguments (whitespace-split, quotes honoured); returns what to print.
   std::function<ConsoleResult(const std::vector<std::string>& args)> run;

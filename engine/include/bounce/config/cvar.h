@@ -40,7 +40,7 @@ constexpr bool hasFlag(CVarFlags set, CVarFlags flag) { return (uint32_t(set) & 
 using CVarValue = std::variant<bool, int32_t, float, std::string>;
 
 /// Where a setting lives in the ini files besides [SystemSettings] (which always
-/// accepts the console name): e.g. {"VXGI", "VxgiMapSize"}.
+/// accepts the console name): e.g. {"Ambient", "AmbientIntensity"}.
 struct IniBinding {
   std::string section;
   std::string key;
@@ -56,10 +56,10 @@ enum class RangePolicy : uint8_t {
 /// An int variable with `enumNames` is an enum.
 template <class T>
 struct CVarDesc {
-  std::string name;  ///< e.g. "r.VXGI.DiffuseCones"; case-insensitive
+  std::string name;  ///< e.g. "r.Ambient.Intensity"; case-insensitive
   T defaultValue{};
   std::string help;
-  std::vector<std::string> aliases;  ///< other spellings, e.g. "r.VXGIDebugMode"
+  std::vector<std::string> aliases;  ///< other spellings, e.g. an older name kept working
   std::optional<double> min;         ///< numeric range, inclusive
   std::optional<double> max;
   RangePolicy outOfRange = RangePolicy::Reject;
@@ -68,7 +68,7 @@ struct CVarDesc {
   CVarFlags flags = CVarFlags::None;
   IniBinding ini;                                 ///< optional plugin-section ini key
   std::string postProcess;                        ///< optional post-process-volume setting name
-  std::string category;                           ///< grouping for the viewer, e.g. "VXGI|Tracing"
+  std::string category;                           ///< grouping for the viewer, e.g. "Ambient" or "Renderer|Shadows"
   std::function<std::string(const T&)> validate;  ///< returns an error, or "" when valid
 };
 

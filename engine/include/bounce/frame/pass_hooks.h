@@ -14,7 +14,7 @@
 namespace bounce {
 
 struct PassHookDesc {
-  std::string name;  ///< e.g. "VXGI.Tracing" (for the report and errors)
+  std::string name;  ///< e.g. "Ambient.Irradiance" (for the report and errors)
   ExtensionPoint point = ExtensionPoint::IndirectDiffuse;
   int order = 0;  ///< among hooks at the same point, lower runs first
   /// Adds this hook's passes to the frame's graph.
@@ -45,10 +45,10 @@ class PassHookRegistry {
 /// A debug visualisation a plugin offers (the viewer lists them). Selecting it runs
 /// `activate` in the console; leaving it runs `deactivate`.
 struct DebugViewDesc {
-  std::string name;  ///< e.g. "VXGI: opacity voxels"
+  std::string name;  ///< e.g. "Ambient: irradiance"
   std::string description;
-  std::string activate;    ///< console line, e.g. "r.VXGI.DebugMode 2"
-  std::string deactivate;  ///< console line, e.g. "r.VXGI.DebugMode 0"
+  std::string activate;    ///< console line, e.g. "r.Ambient.DebugMode 1"
+  std::string deactivate;  ///< console line, e.g. "r.Ambient.DebugMode 0"
 };
 
 class DebugViewRegistry {

@@ -5,9 +5,9 @@
 // resource lifetimes. The engine builds a new graph every frame by calling its own
 // setup code and the plugins' pass hooks in extension-point order.
 //
-//   graph.addPass("VXGI.DiffuseTracing", Queue::Compute, [&](PassBuilder& b) {
+//   graph.addPass("MyGI.DiffuseTracing", Queue::Compute, [&](PassBuilder& b) {
 //     auto normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-//     auto out = b.write(b.createTexture("VXGI.Diffuse", TextureDesc::viewSized(fmt)),
+//     auto out = b.write(b.createTexture("MyGI.Diffuse", TextureDesc::viewSized(fmt)),
 //                        Access::StorageWrite);
 //     bb.setTexture(channels::IndirectDiffuse, out);
 //     b.condition([&] { return anyFlagged ? PassDecision::run("3 materials voxelized")

@@ -40,13 +40,13 @@ class PluginContext {
   void addConsoleCommand(ConsoleCommandDesc desc) { services_.console.addCommand(std::move(desc), owner_); }
 
   /// A material parameter read from glTF extras (a flag when bool), e.g.
-  /// "UsedWithVxgiVoxelization"; its default is overridable in [MaterialDefaults].
+  /// "ReceivesAmbient"; its default is overridable in [MaterialDefaults].
   template <class T>
   ObjectParameter<T> addMaterialParameter(ObjectParameterDesc<T> desc) {
     desc.kind = ObjectKind::Material;
     return services_.parameters.declare(std::move(desc), owner_);
   }
-  /// A light parameter, e.g. "VxgiIndirectLighting"; default in [LightDefaults].
+  /// A light parameter, e.g. "CastsIndirectLight"; default in [LightDefaults].
   template <class T>
   ObjectParameter<T> addLightParameter(ObjectParameterDesc<T> desc) {
     desc.kind = ObjectKind::Light;

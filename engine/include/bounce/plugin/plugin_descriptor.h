@@ -1,11 +1,11 @@
 #pragma once
 // A plugin's JSON descriptor (<Folder>/<Name>.bplugin), modelled on Unreal's .uplugin:
 //
-//   { "FileVersion": 1, "Name": "VXGI", "FriendlyName": "NVIDIA-style VXGI",
+//   { "FileVersion": 1, "Name": "Ambient", "FriendlyName": "Constant ambient",
 //     "Version": 1, "VersionName": "0.1", "Description": "...",
 //     "Category": "GlobalIllumination", "EngineApiVersion": 1,
-//     "Library": "bounce_vxgi", "Dependencies": [], "EnabledByDefault": true,
-//     "ConfigSection": "VXGI", "ConsoleVariablePrefix": "r.VXGI." }
+//     "Library": "bounce_ambient", "Dependencies": [], "EnabledByDefault": true,
+//     "ConfigSection": "Ambient", "ConsoleVariablePrefix": "r.Ambient." }
 //
 // Category "GlobalIllumination" makes the plugin a GI technique selectable with
 // `--gi <Name>` / `r.GI.Technique`; its pass hooks run only while it is selected.
@@ -27,7 +27,7 @@ struct PluginDescriptor {
   std::string description;
   std::string category;
   uint32_t engineApiVersion = 0;
-  std::string library;  ///< "bounce_vxgi" → lib bounce_vxgi.so beside the descriptor
+  std::string library;  ///< "bounce_ambient" → libbounce_ambient.so beside the descriptor
   std::vector<std::string> dependencies;
   bool enabledByDefault = true;
   std::string configSection;          ///< optional: its ini section (quiet when disabled)

@@ -41,7 +41,7 @@ struct Material {
   float alphaCutoff = 0.5f;
   bool doubleSided = false;
   /// Plugin-declared parameters from the material's glTF `extras`
-  /// (e.g. "UsedWithVxgiVoxelization": true). Read them through a declared
+  /// (e.g. "ReceivesAmbient": false). Read them through a declared
   /// ObjectParameter, which falls back to the declared default.
   ObjectParameterValues parameters;
 

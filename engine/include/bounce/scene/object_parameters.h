@@ -1,11 +1,11 @@
 #pragma once
-// Plugin-declared parameters of materials and lights ("flags" when boolean), such as
-// VXGI's "Used with VXGI voxelization". The engine knows none of them: a plugin
+// Plugin-declared parameters of materials and lights ("flags" when boolean), such as a
+// voxel technique's "used with voxelization". The engine knows none of them: a plugin
 // declares each with a default, scenes set them in glTF `extras`, and an ini file or
 // the console may override the default (so foreign content can opt in without edits):
 //
 //   [MaterialDefaults]
-//   UsedWithVxgiVoxelization=True        ; or: Material.UsedWithVxgiVoxelization 1
+//   ReceivesAmbient=False        ; or, at the console: Material.ReceivesAmbient 0
 
 #include "bounce/config/cvar_registry.h"
 #include "bounce/core/owner.h"
@@ -43,13 +43,13 @@ std::string_view objectKindName(ObjectKind kind);
 template <class T>
 struct ObjectParameterDesc {
   ObjectKind kind = ObjectKind::Material;
-  std::string name;         ///< the `extras` key, e.g. "UsedWithVxgiVoxelization"
-  std::string displayName;  ///< e.g. "Used with VXGI voxelization"
+  std::string name;         ///< the `extras` key, e.g. "ReceivesAmbient"
+  std::string displayName;  ///< e.g. "Receives ambient light"
   std::string help;
   T defaultValue{};
   std::optional<double> min;
   std::optional<double> max;
-  std::string category;  ///< grouping in the viewer, e.g. "VXGI"
+  std::string category;  ///< grouping in the viewer, e.g. "Ambient"
 };
 
 /// Handle to a declared parameter; reads a material's or light's value, falling back

@@ -13,7 +13,7 @@ using PostProcessValue = std::variant<bool, double, std::string>;
 
 /// A node with `extras.PostProcessVolume`: the box is the node's world transform applied
 /// to the cube [-1,1]³. Settings name post-process-overridable variables by their
-/// post-process name (e.g. "VxgiDiffuseTracingIntensity").
+/// post-process name (e.g. "AmbientIntensity").
 struct PostProcessVolume {
   std::string name;
   float priority = 0.0f;
