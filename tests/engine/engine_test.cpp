@@ -242,3 +242,16 @@ TEST(Engine, BuildFrameInterleavesEngineStagesAndHooksInExtensionPointOrder) {
 
 }  // namespace
 }  // namespace bounce
+
+namespace bounce {
+namespace {
+
+TEST(CommandLine, UnrealSingleDashOptionsBecomeLongOptions) {
+  const char* argv[] = {"app", "-set", "r.X=1", "-ini=extra.ini", "--gi", "VXGI", "-h", "-5", "-SET=r.Y=a=b", "scene.gltf"};
+  EXPECT_EQ(normalizeCommandLine(10, argv),
+            (std::vector<std::string>{"app", "--set", "r.X=1", "--ini", "extra.ini", "--gi", "VXGI", "-h", "-5",
+                                      "--SET", "r.Y=a=b", "scene.gltf"}));
+}
+
+}  // namespace
+}  // namespace bounce

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <fstream>
 
 namespace {
@@ -54,6 +55,7 @@ void printScene(const bounce::Scene& scene, const bounce::ObjectParameterRegistr
 
 int main(int argc, char** argv) {
   CLI::App app{"bounce-render: render a glTF scene with a GI technique"};
+  app.ignore_case();  // Unreal options are case-insensitive (-SET, -Ini)
   std::string scenePath, technique, graphJson;
   uint32_t width = 512, height = 512;
   std::vector<std::string> inis, sets, enable, disable;
@@ -67,7 +69,10 @@ int main(int argc, char** argv) {
   app.add_option("--disable-plugin", disable, "Disable a plugin (repeatable)");
   app.add_option("--graph-json", graphJson, "Write the compiled graph report as JSON");
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> args = bounce::normalizeCommandLine(argc, argv);
+    std::reverse(args.begin() + 1, args.end());  // CLI11 takes them last-first
+    args.erase(args.begin());
+    app.parse(args);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {

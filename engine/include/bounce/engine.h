@@ -115,4 +115,9 @@ class Engine {
 /// Finds the folder of the running executable (for locating plugins and the root).
 std::filesystem::path executableDirectory();
 
+/// Accepts Unreal's single-dash spellings on any app's command line: `-set r.X=V`,
+/// `-ini FILE`, `-gi NAME`... become `--set`, `--ini`, `--gi`, and `-set=r.X=V` becomes
+/// `--set r.X=V`. Single-letter flags (`-h`) and negative numbers are left alone.
+std::vector<std::string> normalizeCommandLine(int argc, const char* const* argv);
+
 }  // namespace bounce

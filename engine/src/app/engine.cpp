@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <system_error>
 
@@ -15,6 +16,28 @@ fs::path executableDirectory() {
   std::error_code ec;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   return ec ? fs::current_path() : exe.parent_path();
+}
+
+std::vector<std::string> normalizeCommandLine(int argc, const char* const* argv) {
+  std::vector<std::string> out;
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i];
+    const bool unrealLong = i > 0 && a.size() > 2 && a[0] == '-' && a[1] != '-' && std::isalpha(uint8_t(a[1])) &&
+                            std::isalpha(uint8_t(a[2]));
+    if (!unrealLong) {
+      out.push_back(std::move(a));
+      continue;
+    }
+    // -set=r.X=V: the first '=' separates the option from its value.
+    size_t eq = a.find('=');
+    if (eq != std::string::npos) {
+      out.push_back("-" + a.substr(0, eq));
+      out.push_back(a.substr(eq + 1));
+    } else {
+      out.push_back("-" + a);
+    }
+  }
+  return out;
 }
 
 namespace {
