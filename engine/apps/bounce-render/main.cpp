@@ -55,7 +55,7 @@ void printScene(const bounce::Scene& scene, const bounce::ObjectParameterRegistr
 
 int main(int argc, char** argv) {
   CLI::App app{"bounce-render: render a glTF scene with a GI technique"};
-  app.ignore_case();  // Unreal options are case-insensitive (-SET, -Ini)
+  app.option_defaults()->ignore_case();  // Unreal options are case-insensitive (-SET, -Ini)
   std::string scenePath, technique, graphJson;
   uint32_t width = 512, height = 512;
   std::vector<std::string> inis, sets, enable, disable;
