@@ -1,15 +1,23 @@
-// bounce-render: loads a scene with the configured plugins and prints what a frame
-// would run: the scene, the enabled plugins and the compiled render graph with the
-// reason every pass runs or is culled.
+// bounce-render: renders a glTF scene with a GI technique on Vulkan.
 //
 //   bounce-render --scene FILE.gltf [--gi NAME|none] [--width W] [--height H]
-//                 [--ini FILE]... [--set CVAR=VALUE]... [--graph-json FILE]
+//       [--frames N] [--ini FILE]... [--set CVAR=VALUE]...
+//       [--out FILE.png] [--aov NAME=FILE.exr]... [--stats FILE.json]
+//       [--device NAME] [--print-graph] [--graph-json FILE]
 //
-// Exit status: 0 on success, 2 on bad arguments or bad input (with a one-line reason).
+// AOVs (linear float OpenEXR): radiance, direct, indirect-irradiance, albedo, normal,
+// depth. The camera is the scene's first camera; the aspect ratio comes from W/H.
+// Exit status: 0 success, 1 no usable Vulkan device or a device failure, 2 bad
+// arguments or bad input (one-line reason), 3 Vulkan validation errors (when
+// BOUNCE_VALIDATION=1).
 
 #include "bounce/core/log.h"
+#include "bounce/core/names.h"
 #include "bounce/engine.h"
-#include "renderer/deferred_pipeline.h"
+#include "bounce/gpu/device.h"
+#include "bounce/image/image_buffer.h"
+#include "render_stats.h"
+#include "renderer/renderer.h"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -19,54 +27,44 @@
 
 namespace {
 
+constexpr int kDeviceFailure = 1;
 constexpr int kBadInput = 2;
+constexpr int kValidationErrors = 3;
 
-void printScene(const bounce::Scene& scene, const bounce::ObjectParameterRegistry& params) {
-  fmt::print(
-      "Scene {}: {} meshes, {} instances, {} triangles, {} materials, {} lights, {} cameras, {} "
-      "post-process volumes\n",
-      scene.sourcePath(), scene.meshes().size(), scene.instances().size(), scene.triangleCount(),
-      scene.materials().size(), scene.lights().size(), scene.cameras().size(),
-      scene.postProcessVolumes().size());
-  auto flags = [&](bounce::ObjectKind kind, const bounce::ObjectParameterValues& values) {
-    std::string out;
-    for (const auto* p : params.list(kind))
-      if (const auto* v = values.find(p->name)) {
-        std::string text = std::visit([](auto x) { return fmt::format("{}", x); }, *v);
-        out += fmt::format(" {}={}", p->name, text);
-      }
-    return out;
-  };
-  for (const bounce::Material& m : scene.materials())
-    fmt::print("  material {:<14} albedo ({:.2f}, {:.2f}, {:.2f}) roughness {:.2f} metallic {:.2f}{}\n",
-               m.name, m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.roughnessFactor,
-               m.metallicFactor, flags(bounce::ObjectKind::Material, m.parameters));
-  for (const bounce::Light& l : scene.lights()) {
-    const char* type = l.type == bounce::LightType::Directional ? "directional"
-                       : l.type == bounce::LightType::Point     ? "point"
-                                                                : "spot";
-    fmt::print("  light    {:<14} {} intensity {} {}{}\n", l.name, type, l.intensity,
-               l.type == bounce::LightType::Directional ? "W/m²" : "W/sr",
-               flags(bounce::ObjectKind::Light, l.parameters));
-  }
+int fail(int status, const std::string& message) {
+  fmt::print(stderr, "bounce-render: {}\n", message);
+  return status;
 }
+
+struct AovRequest {
+  std::string name;
+  std::string file;
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"bounce-render: render a glTF scene with a GI technique"};
   app.option_defaults()->ignore_case();  // Unreal options are case-insensitive (-SET, -Ini)
-  std::string scenePath, technique, graphJson;
-  uint32_t width = 512, height = 512;
-  std::vector<std::string> inis, sets, enable, disable;
+  std::string scenePath, technique, outPath, statsPath, graphJson, deviceName;
+  uint32_t width = 512, height = 512, frames = 1;
+  bool printGraph = false;
+  std::vector<std::string> inis, sets, aovArgs, enable, disable;
   app.add_option("--scene", scenePath, "glTF scene to load")->required();
   app.add_option("--gi", technique, "GI technique: a GlobalIllumination plugin's name, or none");
   app.add_option("--width", width, "Output width in pixels")->check(CLI::Range(1u, 16384u));
   app.add_option("--height", height, "Output height in pixels")->check(CLI::Range(1u, 16384u));
+  app.add_option("--frames", frames, "Frames to render (the last is written)")
+      ->check(CLI::Range(1u, 100000u));
   app.add_option("--ini", inis, "Extra ini file, applied after the user ini (repeatable)");
   app.add_option("--set", sets, "Console variable NAME=VALUE at command-line priority (repeatable)");
+  app.add_option("--out", outPath, "Write the tone-mapped image as PNG");
+  app.add_option("--aov", aovArgs, "Write an AOV as linear float EXR: NAME=FILE.exr (repeatable)");
+  app.add_option("--stats", statsPath, "Write per-pass GPU times, culled passes and memory as JSON");
+  app.add_option("--device", deviceName, "Use the Vulkan device whose name contains this ($BOUNCE_DEVICE)");
   app.add_option("--enable-plugin", enable, "Enable a plugin (repeatable)");
   app.add_option("--disable-plugin", disable, "Disable a plugin (repeatable)");
+  app.add_flag("--print-graph", printGraph, "Print the compiled render graph of the last frame");
   app.add_option("--graph-json", graphJson, "Write the compiled graph report as JSON");
   try {
     std::vector<std::string> args = bounce::normalizeCommandLine(argc, argv);
@@ -76,8 +74,20 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "bounce-render: {}\n", e.what());
-    return kBadInput;
+    return fail(kBadInput, e.what());
+  }
+
+  std::vector<AovRequest> aovs;
+  for (const std::string& a : aovArgs) {
+    size_t eq = a.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == a.size())
+      return fail(kBadInput, fmt::format("--aov {}: expected NAME=FILE.exr", a));
+    std::string name = a.substr(0, eq);
+    const auto& known = bounce::aovNames();
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      return fail(kBadInput, fmt::format("unknown AOV '{}'{} (AOVs: {})", name,
+                                         bounce::didYouMean(name, known), fmt::join(known, ", ")));
+    aovs.push_back({name, a.substr(eq + 1)});
   }
 
   bounce::EngineOptions options;
@@ -88,38 +98,65 @@ int main(int argc, char** argv) {
   options.technique = technique;
   bounce::Engine engine(std::move(options));
   if (!engine.commandLineErrors().empty()) {
-    for (const std::string& e : engine.commandLineErrors()) fmt::print(stderr, "bounce-render: {}\n", e);
-    return kBadInput;
+    for (size_t i = 1; i < engine.commandLineErrors().size(); ++i)
+      fmt::print(stderr, "bounce-render: {}\n", engine.commandLineErrors()[i]);
+    return fail(kBadInput, engine.commandLineErrors().front());
   }
-
   bounce::GltfLoadResult loaded = engine.loadScene(scenePath);
-  if (!loaded.scene && !engine.scene()) {
-    fmt::print(stderr, "bounce-render: {}\n", loaded.error);
-    return kBadInput;
-  }
+  if (!loaded.scene && !engine.scene()) return fail(kBadInput, loaded.error);
   const bounce::Scene& scene = *engine.scene();
-  printScene(scene, engine.parameters());
-  fmt::print("Plugins: {}\n", fmt::join(engine.plugins().loaded(), ", "));
-  fmt::print("GI technique: {}\n", engine.technique());
+  if (scene.cameras().empty())
+    bounce::log::warn("{}: no camera; using a default one at the origin", scenePath);
+  const bounce::Camera camera = scene.cameras().empty() ? bounce::Camera{} : scene.cameras().front();
 
-  bounce::Camera camera = scene.cameras().empty() ? bounce::Camera{} : scene.cameras().front();
-  bounce::FrameView view = bounce::FrameView::fromCamera(camera, width, height);
-  std::vector<std::string> warnings;
-  bounce::PostProcessSettings pp =
-      bounce::PostProcessSettings::blend(scene, engine.cvars(), view.position, &warnings);
-  for (const std::string& w : warnings) bounce::log::warn("{}", w);
-  bounce::FrameContext frame{scene, engine.cvars(), view, pp, 0, engine.technique()};
-  bounce::DeferredPipeline pipeline(engine.rendererSettings());
-  bounce::RenderGraph graph;
-  engine.buildFrame(graph, frame, pipeline.stages({}));
-  bounce::CompiledGraph compiled = graph.compile();
-  fmt::print("{}", compiled.reportText());
+  std::string error;
+  auto device = bounce::gpu::Device::create({.preferredDevice = deviceName}, &error);
+  if (!device) return fail(kDeviceFailure, error);
+  const uint32_t maxSize = device->properties().limits.maxImageDimension2D;
+  if (width > maxSize || height > maxSize)
+    return fail(kBadInput, fmt::format("{}x{} exceeds the device's largest image, {}x{}", width, height,
+                                       maxSize, maxSize));
+
+  bounce::RenderStats stats(device->name(), width, height, engine.technique());
+  bounce::RenderedFrame last;
+  try {
+    bounce::Renderer renderer(engine, *device);
+    const bounce::FrameView view = bounce::FrameView::fromCamera(camera, width, height);
+    for (uint32_t f = 0; f < frames; ++f) {
+      bounce::FrameOutputs outputs;
+      if (f + 1 == frames) {
+        outputs.display = !outPath.empty();
+        for (const AovRequest& a : aovs) outputs.aovs.push_back(a.name);
+      }
+      bounce::RenderedFrame frame = renderer.render(view, outputs, f);
+      if (!frame.gpu.ok()) return fail(kBadInput, frame.gpu.errors.front());
+      // The first frame compiles pipelines and fills caches: it is not timed.
+      if (f > 0 || frames == 1) stats.addFrame(frame.gpu);
+      if (f + 1 == frames) {
+        for (const std::string& w : frame.warnings) bounce::log::warn("{}", w);
+        stats.setGraph(frame.graph, renderer.executor().memory());
+        last = std::move(frame);
+      }
+    }
+  } catch (const bounce::gpu::ShaderError& e) {
+    return fail(kBadInput, fmt::format("shader error: {}", e.what()));
+  } catch (const bounce::gpu::VulkanError& e) {
+    return fail(kDeviceFailure, e.what());
+  }
+
+  if (!outPath.empty() && !bounce::writePng(last.images["display"], outPath, &error))
+    return fail(kBadInput, error);
+  for (const AovRequest& a : aovs)
+    if (!bounce::writeExr(last.images[a.name], a.file, &error)) return fail(kBadInput, error);
+  if (!statsPath.empty() && !stats.writeJson(statsPath, &error)) return fail(kBadInput, error);
   if (!graphJson.empty()) {
     std::ofstream out(graphJson);
-    if (!(out << compiled.reportJson())) {
-      fmt::print(stderr, "bounce-render: cannot write {}\n", graphJson);
-      return kBadInput;
-    }
+    if (!(out << last.graph.reportJson())) return fail(kBadInput, fmt::format("cannot write {}", graphJson));
   }
+  if (printGraph) fmt::print("{}", last.graph.reportText());
+  fmt::print("{}", stats.table());
+  if (device->validationErrorCount() > 0)
+    return fail(kValidationErrors,
+                fmt::format("{} Vulkan validation errors", device->validationErrorCount()));
   return 0;
 }

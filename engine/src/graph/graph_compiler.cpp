@@ -197,6 +197,14 @@ class GraphCompiler {
         cr.texture.width = std::max(1u, uint32_t(std::ceil(float(g_.viewWidth_) * r.texture.viewScale)));
         cr.texture.height = std::max(1u, uint32_t(std::ceil(float(g_.viewHeight_) * r.texture.viewScale)));
       }
+      if (r.image) {
+        // A mip chain ends at 1×1; a small view cannot hold all the mips a pass asked for.
+        const uint32_t largest =
+            std::max({cr.texture.width, cr.texture.height,
+                      cr.texture.type == TextureType::Tex3D ? cr.texture.depth : 1u, 1u});
+        cr.texture.mips =
+            std::clamp(cr.texture.mips, 1u, uint32_t(std::floor(std::log2(double(largest)))) + 1);
+      }
       cr.bytes = r.image ? textureBytes(cr.texture) : r.buffer.size;
     }
     for (size_t i = 0; i < n_; ++i) {
@@ -334,10 +342,27 @@ class GraphCompiler {
       state[i].writeStages = s.stages;
       state[i].writeAccess = s.access & kWriteAccessMask;
     }
+    // A transient resource sharing a memory slot with an earlier one must not start
+    // writing before that one's last users finish: its first barrier waits for them.
+    std::vector<int32_t> slotOccupant(out_.aliasSlotBytes.size(), -1);
+    std::vector<bool> touched(g_.resources_.size(), false);
     for (size_t i = 0; i < n_; ++i) {
       CompiledPass& cp = out_.passes[i];
       if (!cp.executed) continue;
       const auto& p = g_.passes_[i];
+      for (const Use& use : p.uses) {
+        if (touched[use.resource]) continue;
+        touched[use.resource] = true;
+        const int32_t slot = out_.resources[use.resource].aliasSlot;
+        if (slot < 0) continue;
+        if (int32_t prev = slotOccupant[size_t(slot)]; prev >= 0) {
+          const Tracked& before = state[size_t(prev)];
+          state[use.resource].writeStages = before.writeStages | before.readStages;
+          state[use.resource].writeAccess = before.writeAccess;
+          state[use.resource].layout = VK_IMAGE_LAYOUT_UNDEFINED;  // contents are discarded
+        }
+        slotOccupant[size_t(slot)] = int32_t(use.resource);
+      }
       // Combine every use of a resource within the pass into one state.
       std::vector<std::pair<uint32_t, ResourceState>> combined;
       std::vector<bool> writes;

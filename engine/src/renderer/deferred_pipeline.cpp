@@ -1,116 +1,333 @@
 #include "renderer/deferred_pipeline.h"
 
+#include "bounce/gpu/image.h"
+#include "bounce/gpu/pass_context.h"
 #include "bounce/graph/channels.h"
+#include "renderer/light_setup.h"
 
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace bounce {
 
 namespace {
 
-uint32_t shadowLayers(const Scene& scene) {
-  uint32_t layers = 0;
-  for (const Light& l : scene.lights())
-    if (l.castShadows) layers += l.type == LightType::Point ? 6 : 1;
-  return layers;
+constexpr const char* kShaders = "engine/src/renderer/shaders/";
+gpu::ShaderSource shader(const char* file) { return {std::string(kShaders) + file, {}}; }
+
+// Shading inputs for the GI composite, in the order of lighting.comp's push constants.
+struct LightingPush {
+  glm::mat4 inverseViewProjection;
+  glm::vec4 cameraPosition;
+  glm::vec4 ambient;
+  uint32_t lightCount;
+  uint32_t flags;
+  uint32_t width, height;
+};
+static_assert(sizeof(LightingPush) <= 128);
+
+struct BloomPush {
+  uint32_t width, height, mode;
+  float threshold, exposure;
+};
+
+struct TonemapPush {
+  uint32_t width, height, op, hasBloom;
+  float exposure, bloomIntensity;
+};
+
+// Copies vkCmdUpdateBuffer can take: 64 KiB per call, in multiples of 4 bytes.
+void updateBuffer(VkCommandBuffer cmd, VkBuffer buffer, const void* data, size_t bytes) {
+  const auto* p = static_cast<const uint8_t*>(data);
+  for (size_t offset = 0; offset < bytes; offset += 65536)
+    vkCmdUpdateBuffer(cmd, buffer, offset, std::min<size_t>(65536, bytes - offset), p + offset);
 }
+
+constexpr uint32_t kBloomMips = 5;
 
 }  // namespace
 
-EngineStages DeferredPipeline::stages(const FrameOutputs& outputs) const {
+DeferredPipeline::DeferredPipeline(const RendererSettings& settings, const gpu::Device* device)
+    : settings_(settings), device_(device) {
+  if (!device) return;
+  // What the lighting pass samples as shadow maps when no light casts shadows (the
+  // flag tells it to ignore them, but the binding must still be a depth array).
+  noShadows_ = std::make_unique<gpu::Image>(
+      *device,
+      TextureDesc{.type = TextureType::Tex2DArray, .format = VK_FORMAT_D32_SFLOAT, .width = 1, .height = 1},
+      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+      "noShadows");
+  const float far = 1.0f;
+  gpu::uploadImage(*device, *noShadows_, &far, sizeof(far), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+}
+
+DeferredPipeline::~DeferredPipeline() = default;
+
+const std::vector<std::string>& aovNames() {
+  static const std::vector<std::string> names{"radiance", "direct", "indirect-irradiance",
+                                              "albedo",   "normal", "depth"};
+  return names;
+}
+
+EngineStages DeferredPipeline::stages(const FrameOutputs& outputs, Readbacks* readbacks) const {
   EngineStages s;
   s.geometry = [this](RenderGraph& g, const FrameContext& f) { geometry(g, f); };
   s.lighting = [this](RenderGraph& g, const FrameContext& f) { lighting(g, f); };
   s.postProcess = [this](RenderGraph& g, const FrameContext& f) { postProcess(g, f); };
-  s.output = [this, outputs](RenderGraph& g, const FrameContext& f) { output(g, f, outputs); };
+  s.output = [this, outputs, readbacks](RenderGraph& g, const FrameContext& f) {
+    output(g, f, outputs, readbacks);
+  };
   return s;
 }
 
 void DeferredPipeline::geometry(RenderGraph& g, const FrameContext& frame) const {
   Blackboard& bb = g.blackboard();
-  const uint32_t layers = shadowLayers(frame.scene);
-  const uint32_t size = uint32_t(settings_.shadowMapSize.get());
+  const uint32_t mapSize = uint32_t(settings_.shadowMapSize.get());
+  auto lights = std::make_shared<const LightSetup>(LightSetup::build(frame.scene, mapSize));
+
+  // Lights and shadow matrices, uploaded inside the frame so every reader is ordered
+  // after the copy by the graph's barriers.
+  g.addPass("SceneLights", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const uint64_t lightBytes =
+        std::max<uint64_t>(lights->lights.size() * sizeof(GpuLight), sizeof(GpuLight));
+    const uint64_t matrixBytes =
+        std::max<uint64_t>(lights->shadowMatrices.size() * sizeof(glm::mat4), sizeof(glm::mat4));
+    BufferHandle lightBuf = b.write(b.createBuffer("scene.lights", {lightBytes}), Access::TransferDst);
+    BufferHandle matrixBuf =
+        b.write(b.createBuffer("scene.shadowMatrices", {matrixBytes}), Access::TransferDst);
+    bb.setBuffer("scene.lights", lightBuf);
+    bb.setBuffer("scene.shadowMatrices", matrixBuf);
+    b.condition([lights] { return PassDecision::run(fmt::format("{} lights", lights->lights.size())); });
+    return [=](PassContext& ctx) {
+      if (!lights->lights.empty())
+        updateBuffer(ctx.cmd(), ctx.buffer(lightBuf).handle(), lights->lights.data(),
+                     lights->lights.size() * sizeof(GpuLight));
+      if (!lights->shadowMatrices.empty())
+        updateBuffer(ctx.cmd(), ctx.buffer(matrixBuf).handle(), lights->shadowMatrices.data(),
+                     lights->shadowMatrices.size() * sizeof(glm::mat4));
+    };
+  });
+
+  const uint32_t layers = lights->shadowLayers();
+  const float slopeBias = settings_.shadowDepthBias.get();
   g.addPass("ShadowMaps", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
-    TextureDesc desc{
-        .format = VK_FORMAT_D32_SFLOAT, .width = size, .height = size, .layers = std::max(1u, layers)};
-    bb.setTexture(channels::ShadowMaps,
-                  b.write(b.createTexture("ShadowMaps", desc), Access::DepthAttachment));
+    TextureDesc desc{.type = TextureType::Tex2DArray,
+                     .format = VK_FORMAT_D32_SFLOAT,
+                     .width = mapSize,
+                     .height = mapSize,
+                     .layers = std::max(1u, layers)};
+    TextureHandle maps =
+        b.write(b.createTexture(std::string(channels::ShadowMaps), desc), Access::DepthAttachment);
+    bb.setTexture(channels::ShadowMaps, maps);
     b.condition([layers] {
-      return layers ? PassDecision::run(fmt::format("{} shadow map layers", layers))
+      return layers ? PassDecision::run(fmt::format("{} shadow-map layers", layers))
                     : PassDecision::skip("no shadow-casting lights");
     });
-    return {};
+    return [=](PassContext& ctx) {
+      gpu::GraphicsPipelineDesc pd;
+      pd.vertex = shader("shadow_depth.vert");
+      pd.depthFormat = VK_FORMAT_D32_SFLOAT;
+      // Both faces cast: single-sided walls must still block light from behind.
+      pd.cullMode = VK_CULL_MODE_NONE;
+      pd.depthBias = true;
+      const gpu::Pipeline& pipeline = ctx.pipelines().graphics(pd);
+      gpu::Bindings common;
+      common.buffer("SceneInstances", ctx.scene().instances());
+      for (uint32_t layer = 0; layer < layers; ++layer) {
+        ctx.beginRendering({.depth = DepthTarget{maps, 1.0f}, .layer = layer});
+        // Slope-scaled bias in depth units per texel of slope, plus one unit of depth
+        // resolution: removes acne without visibly detaching contact shadows.
+        vkCmdSetDepthBias(ctx.cmd(), 1.0f, 0.0f, slopeBias);
+        glm::mat4 m = lights->shadowMatrices[layer];
+        ctx.drawScene(pipeline, common, {}, &m, sizeof(m));
+        ctx.endRendering();
+      }
+    };
   });
+
   const size_t triangles = frame.scene.triangleCount();
+  const glm::mat4 viewProjection = frame.view.viewProjection;
   g.addPass("GBuffer", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
     auto target = [&](std::string_view channel, VkFormat format, Access access) {
-      bb.setTexture(channel,
-                    b.write(b.createTexture(std::string(channel), TextureDesc::viewSized(format)), access));
+      TextureHandle h =
+          b.write(b.createTexture(std::string(channel), TextureDesc::viewSized(format)), access);
+      bb.setTexture(channel, h);
+      return h;
     };
-    target(channels::GBufferBaseColor, VK_FORMAT_R8G8B8A8_SRGB, Access::ColorAttachment);
-    target(channels::GBufferNormalRoughness, VK_FORMAT_R16G16B16A16_SFLOAT, Access::ColorAttachment);
-    target(channels::GBufferMaterial, VK_FORMAT_R8G8B8A8_UNORM, Access::ColorAttachment);
-    target(channels::GBufferEmissive, VK_FORMAT_R16G16B16A16_SFLOAT, Access::ColorAttachment);
-    target(channels::GBufferDepth, VK_FORMAT_D32_SFLOAT, Access::DepthAttachment);
+    TextureHandle base = target(channels::GBufferBaseColor, VK_FORMAT_R8G8B8A8_SRGB, Access::ColorAttachment);
+    TextureHandle normal =
+        target(channels::GBufferNormalRoughness, VK_FORMAT_R16G16B16A16_SFLOAT, Access::ColorAttachment);
+    TextureHandle material =
+        target(channels::GBufferMaterial, VK_FORMAT_R8G8B8A8_UNORM, Access::ColorAttachment);
+    TextureHandle emissive =
+        target(channels::GBufferEmissive, VK_FORMAT_R16G16B16A16_SFLOAT, Access::ColorAttachment);
+    TextureHandle depth = target(channels::GBufferDepth, VK_FORMAT_D32_SFLOAT, Access::DepthAttachment);
     b.condition([triangles] { return PassDecision::run(fmt::format("{} triangles", triangles)); });
-    return {};
+    return [=](PassContext& ctx) {
+      gpu::GraphicsPipelineDesc pd;
+      pd.vertex = shader("gbuffer.vert");
+      pd.fragment = shader("gbuffer.frag");
+      pd.colorFormats = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R8G8B8A8_UNORM,
+                         VK_FORMAT_R16G16B16A16_SFLOAT};
+      pd.depthFormat = VK_FORMAT_D32_SFLOAT;
+      const gpu::Pipeline& singleSided = ctx.pipelines().graphics(pd);
+      pd.cullMode = VK_CULL_MODE_NONE;
+      const gpu::Pipeline& doubleSided = ctx.pipelines().graphics(pd);
+      const glm::vec4 zero(0.0f);
+      ctx.beginRendering({.colors = {{base, zero}, {normal, zero}, {material, zero}, {emissive, zero}},
+                          .depth = DepthTarget{depth, 1.0f}});
+      gpu::Bindings common;
+      common.buffer("SceneInstances", ctx.scene().instances())
+          .buffer("SceneMaterials", ctx.scene().materials());
+      ctx.drawScene(
+          singleSided, common, [](const gpu::GpuDraw& d) { return !d.doubleSided; }, &viewProjection,
+          sizeof(viewProjection));
+      ctx.drawScene(
+          doubleSided, common, [](const gpu::GpuDraw& d) { return d.doubleSided; }, &viewProjection,
+          sizeof(viewProjection));
+      ctx.endRendering();
+    };
   });
 }
 
-void DeferredPipeline::lighting(RenderGraph& g, const FrameContext&) const {
+void DeferredPipeline::lighting(RenderGraph& g, const FrameContext& frame) const {
   Blackboard& bb = g.blackboard();
+  LightingPush push{};
+  push.inverseViewProjection = frame.view.inverseViewProjection;
+  push.cameraPosition = glm::vec4(frame.view.position, 1.0f);
+  push.ambient = glm::vec4(glm::vec3(frame.setting(settings_.ambientIrradiance)), 0.0f);
+  push.lightCount = uint32_t(frame.scene.lights().size());
+  push.width = frame.view.width;
+  push.height = frame.view.height;
   g.addPass("Lighting", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    for (std::string_view c : {channels::GBufferBaseColor, channels::GBufferNormalRoughness,
-                               channels::GBufferMaterial, channels::GBufferEmissive, channels::GBufferDepth})
-      b.read(bb.texture(c), Access::Sampled);
-    b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
+    TextureHandle base = b.read(bb.texture(channels::GBufferBaseColor), Access::Sampled);
+    TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+    TextureHandle material = b.read(bb.texture(channels::GBufferMaterial), Access::Sampled);
+    TextureHandle emissive = b.read(bb.texture(channels::GBufferEmissive), Access::Sampled);
+    TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+    BufferHandle lights = b.read(bb.buffer("scene.lights"), Access::StorageRead);
+    BufferHandle matrices = b.read(bb.buffer("scene.shadowMatrices"), Access::StorageRead);
+    TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
     // Whatever GI channels plugins produced; none costs nothing.
-    b.readOptional(bb.texture(channels::IndirectDiffuse), Access::Sampled);
-    b.readOptional(bb.texture(channels::IndirectSpecular), Access::Sampled);
-    b.readOptional(bb.texture(channels::AmbientOcclusion), Access::Sampled);
+    TextureHandle diffuse = b.readOptional(bb.texture(channels::IndirectDiffuse), Access::Sampled);
+    TextureHandle specular = b.readOptional(bb.texture(channels::IndirectSpecular), Access::Sampled);
+    TextureHandle ao = b.readOptional(bb.texture(channels::AmbientOcclusion), Access::Sampled);
     const TextureDesc hdr = TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT);
-    bb.setTexture(channels::SceneColor,
-                  b.write(b.createTexture(std::string(channels::SceneColor), hdr), Access::StorageWrite));
-    bb.setTexture(channels::DirectLighting,
-                  b.write(b.createTexture(std::string(channels::DirectLighting), hdr), Access::StorageWrite));
-    return {};
+    TextureHandle radiance =
+        b.write(b.createTexture(std::string(channels::SceneColor), hdr), Access::StorageWrite);
+    TextureHandle direct =
+        b.write(b.createTexture(std::string(channels::DirectLighting), hdr), Access::StorageWrite);
+    bb.setTexture(channels::SceneColor, radiance);
+    bb.setTexture(channels::DirectLighting, direct);
+    return [=](PassContext& ctx) mutable {
+      // Shadows and GI channels whose producers were culled read as black; the flags
+      // tell the shader which ones to use.
+      push.flags = (ctx.available(diffuse) ? 1u : 0u) | (ctx.available(specular) ? 2u : 0u) |
+                   (ctx.available(ao) ? 4u : 0u) | (ctx.available(shadows) ? 8u : 0u);
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("lighting.comp"));
+      gpu::Bindings bind;
+      bind.texture("gBaseColor", base, gpu::SamplerKind::NearestClamp)
+          .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
+          .texture("gMaterial", material, gpu::SamplerKind::NearestClamp)
+          .texture("gEmissive", emissive, gpu::SamplerKind::NearestClamp)
+          .texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
+          .buffer("SceneLights", lights)
+          .buffer("ShadowMatrices", matrices)
+          .texture("giIndirectDiffuse", diffuse, gpu::SamplerKind::NearestClamp)
+          .texture("giIndirectSpecular", specular, gpu::SamplerKind::NearestClamp)
+          .texture("giAmbientOcclusion", ao, gpu::SamplerKind::NearestClamp)
+          .storage("outRadiance", radiance)
+          .storage("outDirect", direct);
+      if (ctx.available(shadows))
+        bind.texture("shadowMaps", shadows, gpu::SamplerKind::ShadowCompare);
+      else
+        bind.texture("shadowMaps", *noShadows_, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                     gpu::SamplerKind::ShadowCompare);
+      ctx.dispatchThreads(pipeline, bind, {push.width, push.height, 1}, push);
+    };
   });
 }
 
 void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) const {
   Blackboard& bb = g.blackboard();
   const float bloom = frame.setting(settings_.bloomIntensity);
+  const float threshold = frame.setting(settings_.bloomThreshold);
+  const float exposure = std::exp2(frame.setting(settings_.exposure));
+  const uint32_t width = frame.view.width, height = frame.view.height;
   TextureHandle bloomTexture;
   g.addPass("Bloom", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    b.read(bb.texture(channels::SceneColor), Access::Sampled);
+    TextureHandle hdr = b.read(bb.texture(channels::SceneColor), Access::Sampled);
     TextureDesc desc = TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, 0.5f);
-    desc.mips = 5;
-    bloomTexture = b.write(b.createTexture("Bloom", desc), Access::StorageWrite);
+    desc.mips = kBloomMips;
+    bloomTexture = b.write(b.createTexture("Bloom", desc), Access::StorageReadWrite);
+    b.read(bloomTexture, Access::Sampled);  // each step samples the mip the previous one wrote
     b.condition([bloom] {
       return bloom > 0.0f ? PassDecision::run(fmt::format("bloom intensity {}", bloom))
                           : PassDecision::skip("r.Bloom.Intensity is 0");
     });
-    return {};
+    TextureHandle out = bloomTexture;
+    return [=](PassContext& ctx) {
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("bloom.comp"));
+      const gpu::Image& img = ctx.image(out);
+      auto step = [&](uint32_t mode, uint32_t mip, gpu::Bindings bind) {
+        VkExtent3D e = img.extent(mip);
+        BloomPush p{e.width, e.height, mode, threshold, exposure};
+        bind.storage("target", out, mip);
+        ctx.dispatchThreads(pipeline, bind, {e.width, e.height, 1}, p);
+        // The next step samples what this one wrote.
+        VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        mb.srcStageMask = mb.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+        mb.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+        mb.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &mb;
+        vkCmdPipelineBarrier2(ctx.cmd(), &dep);
+      };
+      const uint32_t mips = img.desc().mips;
+      step(0, 0, gpu::Bindings().texture("source", hdr));
+      for (uint32_t m = 1; m < mips; ++m)
+        step(1, m, gpu::Bindings().texture("source", out, gpu::SamplerKind::LinearClamp, m - 1));
+      for (uint32_t m = mips - 1; m-- > 0;)
+        step(2, m, gpu::Bindings().texture("source", out, gpu::SamplerKind::LinearClamp, m + 1));
+    };
   });
+
+  const int32_t op = settings_.tonemapOperator.get();
   g.addPass("Tonemap", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    b.read(bb.texture(channels::SceneColor), Access::Sampled);
-    b.readOptional(bloomTexture, Access::Sampled);
-    bb.setTexture(channels::SceneColorLdr,
-                  b.write(b.createTexture(std::string(channels::SceneColorLdr),
-                                          TextureDesc::viewSized(VK_FORMAT_R8G8B8A8_UNORM)),
-                          Access::StorageWrite));
-    return {};
+    TextureHandle hdr = b.read(bb.texture(channels::SceneColor), Access::Sampled);
+    TextureHandle bloomIn = b.readOptional(bloomTexture, Access::Sampled);
+    TextureHandle ldr = b.write(b.createTexture(std::string(channels::SceneColorLdr),
+                                                TextureDesc::viewSized(VK_FORMAT_R8G8B8A8_UNORM)),
+                                Access::StorageWrite);
+    bb.setTexture(channels::SceneColorLdr, ldr);
+    return [=](PassContext& ctx) {
+      const bool hasBloom = ctx.available(bloomIn);
+      TonemapPush p{width, height, uint32_t(op), hasBloom ? 1u : 0u, exposure, bloom};
+      gpu::Bindings bind;
+      bind.texture("hdr", hdr, gpu::SamplerKind::NearestClamp).texture("bloom", bloomIn).storage("ldr", ldr);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader("tonemap.comp")), bind, {width, height, 1}, p);
+    };
   });
 }
 
-void DeferredPipeline::output(RenderGraph& g, const FrameContext&, const FrameOutputs& outputs) const {
+void DeferredPipeline::output(RenderGraph& g, const FrameContext& frame, const FrameOutputs& outputs,
+                              Readbacks* readbacks) const {
   const Blackboard& bb = g.blackboard();
   // "Show this debug view" is just "mark that output": the tone-mapped image and
   // everything only it needs are culled while a debug view is up.
-  if (TextureHandle debug = bb.texture(channels::DebugView); debug.valid())
-    g.markOutput(debug, "debug view");
+  TextureHandle shown = bb.texture(channels::DebugView);
+  if (shown.valid())
+    g.markOutput(shown, "debug view");
   else
     g.markOutput(bb.texture(channels::SceneColorLdr), "displayed image");
+  if (!readbacks || !device_) return;
+
+  std::vector<std::pair<std::string, TextureHandle>> wanted;
+  if (outputs.display)
+    wanted.emplace_back("display", shown.valid() ? shown : bb.texture(channels::SceneColorLdr));
   for (const std::string& aov : outputs.aovs) {
     std::string_view channel = aov == "radiance"              ? channels::SceneColor
                                : aov == "direct"              ? channels::DirectLighting
@@ -119,7 +336,44 @@ void DeferredPipeline::output(RenderGraph& g, const FrameContext&, const FrameOu
                                : aov == "normal"              ? channels::GBufferNormalRoughness
                                : aov == "depth"               ? channels::GBufferDepth
                                                               : std::string_view{};
-    if (TextureHandle h = bb.texture(channel); h.valid()) g.markOutput(h, "AOV " + aov);
+    wanted.emplace_back(aov, bb.texture(channel));
+  }
+  for (auto& [name, handle] : wanted) {
+    Readback& rb = (*readbacks)[name];
+    rb.width = frame.view.width;
+    rb.height = frame.view.height;
+    rb.produced = false;
+    if (!handle.valid()) continue;  // e.g. no GI plugin produced indirect irradiance
+    const RenderGraph::Resource& res = g.resources()[handle.resource];
+    rb.format = res.texture.format;
+    const uint64_t bytes = uint64_t(rb.width) * rb.height * formatBytesPerTexel(rb.format);
+    if (!rb.buffer || rb.buffer->size() < bytes)
+      rb.buffer = std::make_unique<gpu::Buffer>(*device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                gpu::MemoryUsage::Readback, "readback." + name);
+    Readback* target = &rb;
+    g.addPass("Readback." + name, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      TextureHandle src = b.readOptional(handle, Access::TransferSrc);
+      b.sideEffect("copies '" + name + "' to the host");
+      return [=](PassContext& ctx) {
+        if (!ctx.available(src)) return;
+        const gpu::Image& img = ctx.image(src);
+        VkBufferImageCopy copy{};
+        copy.imageSubresource = {img.aspect(), 0, 0, 1};
+        copy.imageExtent = img.extent();
+        vkCmdCopyImageToBuffer(ctx.cmd(), img.handle(), ctx.layout(src), target->buffer->handle(), 1, &copy);
+        // Make the copy visible to the host once the frame's fence signals.
+        VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        mb.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+        mb.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        mb.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+        mb.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &mb;
+        vkCmdPipelineBarrier2(ctx.cmd(), &dep);
+        target->produced = true;
+      };
+    });
   }
 }
 

@@ -1,35 +1,60 @@
 #pragma once
-// The engine's own passes: shadow maps, G-buffer, deferred lighting with the GI
-// composite, bloom and tone mapping. Placed between the extension points by
-// Engine::buildFrame.
+// The engine's own passes: scene lights, shadow maps, G-buffer, deferred lighting with
+// the GI composite, bloom, tone mapping and read-backs. Engine::buildFrame places them
+// between the extension points.
 
 #include "bounce/engine.h"
+#include "bounce/gpu/buffer.h"
+#include "bounce/gpu/device.h"
+#include "bounce/gpu/image.h"
 #include "bounce/renderer/renderer_settings.h"
 
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace bounce {
 
+/// Host-visible copies of frame textures, filled by read-back passes.
+struct Readback {
+  std::unique_ptr<gpu::Buffer> buffer;
+  uint32_t width = 0;
+  uint32_t height = 0;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  bool produced = false;  ///< false when the channel did not exist this frame
+};
+using Readbacks = std::map<std::string, Readback>;
+
 /// What a frame must produce besides the displayed image.
 struct FrameOutputs {
-  std::vector<std::string> aovs;  ///< radiance, direct, indirect-irradiance, albedo, normal, depth
+  std::vector<std::string> aovs;  ///< AOV names (see aovNames())
+  bool display = false;           ///< read back the tone-mapped image as "display"
 };
+
+/// radiance, direct, indirect-irradiance, albedo, normal, depth.
+const std::vector<std::string>& aovNames();
 
 class DeferredPipeline {
  public:
-  explicit DeferredPipeline(const RendererSettings& settings) : settings_(settings) {}
+  /// Without a device the stages only declare passes (graph reports, tests).
+  DeferredPipeline(const RendererSettings& settings, const gpu::Device* device);
+  ~DeferredPipeline();
 
-  /// The engine stages for one frame.
-  EngineStages stages(const FrameOutputs& outputs) const;
+  /// The engine stages for one frame. Read-back passes copy into `readbacks` (which
+  /// must outlive the frame's execution); without a device they are not added.
+  EngineStages stages(const FrameOutputs& outputs, Readbacks* readbacks) const;
 
  private:
   void geometry(RenderGraph& graph, const FrameContext& frame) const;
   void lighting(RenderGraph& graph, const FrameContext& frame) const;
   void postProcess(RenderGraph& graph, const FrameContext& frame) const;
-  void output(RenderGraph& graph, const FrameContext& frame, const FrameOutputs& outputs) const;
+  void output(RenderGraph& graph, const FrameContext& frame, const FrameOutputs& outputs,
+              Readbacks* readbacks) const;
 
   const RendererSettings& settings_;
+  const gpu::Device* device_;
+  std::unique_ptr<gpu::Image> noShadows_;
 };
 
 }  // namespace bounce

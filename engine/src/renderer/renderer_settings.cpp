@@ -49,6 +49,16 @@ RendererSettings::RendererSettings(CVarRegistry& cvars)
                                        .max = 1.0e4,
                                        .outOfRange = RangePolicy::Clamp,
                                        .postProcess = "BloomThreshold",
-                                       .category = "Renderer|Post process"})) {}
+                                       .category = "Renderer|Post process"})),
+      ambientIrradiance(cvars.add<float>(
+          {.name = "r.Lighting.AmbientIrradiance",
+           .defaultValue = 0.0f,
+           .help = "Constant ambient irradiance in W/m² added to every surface's indirect diffuse light "
+                   "(multiplied by a plugin's ambient occlusion when there is one). 0: no ambient term.",
+           .min = 0.0,
+           .max = 1.0e5,
+           .outOfRange = RangePolicy::Clamp,
+           .postProcess = "AmbientIrradiance",
+           .category = "Renderer|Lighting"})) {}
 
 }  // namespace bounce

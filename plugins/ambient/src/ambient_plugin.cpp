@@ -5,12 +5,15 @@
 // override, a material flag, a pass hook with a scene-driven condition, a debug view
 // and a console command.
 
+#include <bounce/gpu/pass_context.h>
 #include <bounce/graph/channels.h>
 #include <bounce/plugin/plugin.h>
 #include <bounce/plugin/plugin_context.h>
 #include <bounce/scene/material.h>
 
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace bounce::ambient {
 
@@ -58,15 +61,17 @@ class AmbientPlugin final : public Plugin {
  private:
   void setup(RenderGraph& graph, const FrameContext& frame) {
     const float intensity = frame.setting(intensity_);
-    size_t receiving = 0;
-    for (const Material& m : frame.scene.materials()) receiving += receives_.of(m) ? 1 : 0;
+    std::vector<bool> receives;
+    for (const Material& m : frame.scene.materials()) receives.push_back(receives_.of(m));
+    const size_t receiving = size_t(std::count(receives.begin(), receives.end(), true));
+    const glm::mat4 viewProjection = frame.view.viewProjection;
 
     Blackboard& bb = graph.blackboard();
-    graph.addPass("Ambient.Irradiance", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-      b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+    graph.addPass("Ambient.Irradiance", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
+      TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::DepthRead);
       TextureHandle out = b.write(
           b.createTexture("Ambient.Irradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
-          Access::StorageWrite);
+          Access::ColorAttachment);
       bb.setTexture(channels::IndirectDiffuse, out);
       b.condition([intensity] {
         return intensity > 0.0f ? PassDecision::run(fmt::format("ambient intensity {} W/m²", intensity))
@@ -76,7 +81,28 @@ class AmbientPlugin final : public Plugin {
         return receiving > 0 ? PassDecision::run(fmt::format("{} materials receive ambient", receiving))
                              : PassDecision::skip("no material has ReceivesAmbient");
       });
-      return {};  // GPU recording arrives with the renderer
+      return [=](PassContext& ctx) {
+        gpu::GraphicsPipelineDesc pd;
+        pd.vertex = {"plugins/ambient/shaders/ambient.vert", {}};
+        pd.fragment = gpu::ShaderSource{"plugins/ambient/shaders/ambient.frag", {}};
+        pd.colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
+        pd.depthFormat = VK_FORMAT_D32_SFLOAT;
+        pd.depthWrite = false;  // test against the G-buffer's depth: only visible surfaces
+        pd.cullMode = VK_CULL_MODE_NONE;
+        const gpu::Pipeline& pipeline = ctx.pipelines().graphics(pd);
+        struct {
+          glm::mat4 viewProjection;
+          glm::vec4 irradiance;
+        } push{viewProjection, glm::vec4(glm::vec3(intensity), 0.0f)};
+        ctx.beginRendering({.colors = {{out, glm::vec4(0.0f)}}, .depth = DepthTarget{depth, std::nullopt}});
+        gpu::Bindings common;
+        common.buffer("SceneInstances", ctx.scene().instances());
+        ctx.drawScene(
+            pipeline, common,
+            [&](const gpu::GpuDraw& d) { return d.material < receives.size() && receives[d.material]; },
+            &push, sizeof(push));
+        ctx.endRendering();
+      };
     });
   }
 

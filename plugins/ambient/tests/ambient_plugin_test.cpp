@@ -49,6 +49,9 @@ EngineStages testStages(bool& diffuseAvailable) {
       auto n = b.write(b.createTexture("normal", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
                        Access::ColorAttachment);
       g.blackboard().setTexture(channels::GBufferNormalRoughness, n);
+      auto d = b.write(b.createTexture("depth", TextureDesc::viewSized(VK_FORMAT_D32_SFLOAT)),
+                       Access::DepthAttachment);
+      g.blackboard().setTexture(channels::GBufferDepth, d);
       return RecordFn{};
     });
   };

@@ -8,7 +8,8 @@
 
 namespace bounce {
 
-enum class TextureType : uint8_t { Tex2D, Tex3D, Cube };
+/// Tex2DArray is sampled as an array even with one layer (shadow maps of any count).
+enum class TextureType : uint8_t { Tex2D, Tex2DArray, Tex3D, Cube };
 
 /// A texture the graph creates (transient) or imports (persistent).
 struct TextureDesc {

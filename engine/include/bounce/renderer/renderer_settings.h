@@ -14,6 +14,8 @@ struct RendererSettings {
   CVarRef<float> exposure;  ///< r.Tonemap.ExposureCompensation (EV), post-process "ExposureCompensation"
   CVarRef<float> bloomIntensity;  ///< r.Bloom.Intensity, post-process "BloomIntensity"
   CVarRef<float> bloomThreshold;  ///< r.Bloom.Threshold, post-process "BloomThreshold"
+  CVarRef<float>
+      ambientIrradiance;  ///< r.Lighting.AmbientIrradiance (W/m²), post-process "AmbientIrradiance"
 };
 
 }  // namespace bounce

@@ -1,0 +1,79 @@
+#include "render_stats.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+
+namespace bounce {
+
+RenderStats::RenderStats(std::string device, uint32_t width, uint32_t height, std::string technique)
+    : device_(std::move(device)), technique_(std::move(technique)), width_(width), height_(height) {}
+
+double RenderStats::median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void RenderStats::addFrame(const gpu::FrameResult& frame) {
+  for (const gpu::PassTiming& p : frame.passes) {
+    if (!passMs_.count(p.name)) order_.push_back(p.name);
+    passMs_[p.name].push_back(p.milliseconds);
+  }
+  frameMs_.push_back(frame.frameMilliseconds);
+}
+
+void RenderStats::setGraph(const CompiledGraph& graph, const gpu::MemoryReport& memory) {
+  culled_.clear();
+  runReasons_.clear();
+  for (const CompiledPass& p : graph.passes)
+    (p.executed ? runReasons_ : culled_).emplace_back(p.name, p.reason);
+  memory_ = memory;
+  persistentBytes_ = graph.persistentBytes();
+}
+
+std::string RenderStats::table() const {
+  size_t w = 10;
+  for (const std::string& n : order_) w = std::max(w, n.size());
+  std::string out = fmt::format("{} {}x{}, GI {}: GPU ms per pass (median of {} frames)\n", device_, width_,
+                                height_, technique_, frameMs_.size());
+  for (const std::string& n : order_) out += fmt::format("  {:<{}}  {:>9.3f}\n", n, w, median(passMs_.at(n)));
+  out += fmt::format("  {:<{}}  {:>9.3f}\n", "frame", w, median(frameMs_));
+  for (const auto& [name, reason] : culled_) out += fmt::format("  culled: {} ({})\n", name, reason);
+  return out;
+}
+
+bool RenderStats::writeJson(const std::string& path, std::string* error) const {
+  nlohmann::json j;
+  j["device"] = device_;
+  j["width"] = width_;
+  j["height"] = height_;
+  j["technique"] = technique_;
+  j["timedFrames"] = frameMs_.size();
+  j["frameMs"] = median(frameMs_);
+  j["passes"] = nlohmann::json::array();
+  for (const std::string& n : order_) {
+    std::string reason;
+    for (const auto& [name, why] : runReasons_)
+      if (name == n) reason = why;
+    j["passes"].push_back(
+        {{"name", n}, {"medianMs", median(passMs_.at(n))}, {"samplesMs", passMs_.at(n)}, {"reason", reason}});
+  }
+  j["culled"] = nlohmann::json::array();
+  for (const auto& [name, reason] : culled_) j["culled"].push_back({{"name", name}, {"reason", reason}});
+  j["resources"] = nlohmann::json::array();
+  for (const auto& r : memory_.resources)
+    j["resources"].push_back({{"name", r.name}, {"bytes", r.bytes}, {"persistent", r.persistent}});
+  j["memory"] = {{"transientPoolBytes", memory_.transientPoolBytes}, {"persistentBytes", persistentBytes_}};
+  std::ofstream out(path);
+  if (!(out << j.dump(2) << '\n')) {
+    if (error) *error = fmt::format("cannot write {}", path);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace bounce

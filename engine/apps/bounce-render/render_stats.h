@@ -1,0 +1,37 @@
+#pragma once
+// Per-pass GPU timings over several frames, with the medians, the culled passes and
+// memory, printed as a table and written as JSON (bounce-render --stats).
+
+#include "bounce/graph/compiled_graph.h"
+#include "gpu/graph_executor.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace bounce {
+
+class RenderStats {
+ public:
+  RenderStats(std::string device, uint32_t width, uint32_t height, std::string technique);
+  void addFrame(const gpu::FrameResult& frame);
+  void setGraph(const CompiledGraph& graph, const gpu::MemoryReport& memory);
+
+  std::string table() const;
+  bool writeJson(const std::string& path, std::string* error) const;
+
+  static double median(std::vector<double> values);
+
+ private:
+  std::string device_, technique_;
+  uint32_t width_, height_;
+  std::vector<std::string> order_;  // passes in execution order
+  std::map<std::string, std::vector<double>> passMs_;
+  std::vector<double> frameMs_;
+  std::vector<std::pair<std::string, std::string>> culled_;
+  std::vector<std::pair<std::string, std::string>> runReasons_;
+  gpu::MemoryReport memory_;
+  uint64_t persistentBytes_ = 0;
+};
+
+}  // namespace bounce

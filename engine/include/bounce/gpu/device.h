@@ -1,0 +1,154 @@
+#pragma once
+// The Vulkan device: instance, physical-device choice, logical device with its single
+// queue, memory allocation, shared samplers, one-shot command submission, and the
+// validation-layer message counter that makes tests fail on validation errors.
+
+#include "bounce/gpu/vulkan_error.h"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bounce::gpu {
+
+struct DeviceOptions {
+  /// Substring of the device name to use (case-insensitive). Empty: $BOUNCE_DEVICE, else
+  /// the best GPU (discrete > integrated > virtual), else lavapipe (the CPU device).
+  std::string preferredDevice;
+  /// Khronos validation layer with a message counter. Also on with $BOUNCE_VALIDATION=1.
+  bool validation = false;
+  /// Extra instance extensions (a window system's surface extensions).
+  std::vector<std::string> instanceExtensions;
+  /// Enables VK_KHR_swapchain (the viewer).
+  bool presentation = false;
+};
+
+/// Optional features plugins may depend on (checked, never assumed).
+struct DeviceFeatures {
+  bool geometryShader = false;
+  bool fragmentStoresAndAtomics = false;
+  bool shaderFloat16 = false;
+  bool shaderImageFloat32Atomics = false;  ///< VK_EXT_shader_atomic_float
+  bool shaderImageFloat32AtomicAdd = false;
+  bool samplerAnisotropy = false;
+};
+
+enum class SamplerKind : uint8_t {
+  LinearClamp,
+  NearestClamp,
+  LinearRepeat,
+  LinearMipmapRepeat,
+  ShadowCompare,  ///< depth comparison (less-or-equal), linear: 2×2 PCF in hardware
+  Count,
+};
+
+/// One device memory block; freed on destruction.
+class Allocation {
+ public:
+  Allocation() = default;
+  Allocation(VkDevice device, VkDeviceMemory memory, VkDeviceSize size, void* mapped)
+      : device_(device), memory_(memory), size_(size), mapped_(mapped) {}
+  Allocation(Allocation&& o) noexcept { *this = std::move(o); }
+  Allocation& operator=(Allocation&& o) noexcept;
+  Allocation(const Allocation&) = delete;
+  Allocation& operator=(const Allocation&) = delete;
+  ~Allocation() { reset(); }
+  void reset();
+
+  VkDeviceMemory memory() const { return memory_; }
+  VkDeviceSize size() const { return size_; }
+  void* mapped() const { return mapped_; }  ///< non-null for host-visible memory
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkDeviceSize size_ = 0;
+  void* mapped_ = nullptr;
+};
+
+class Device {
+  struct CreationKey {
+    explicit CreationKey() = default;
+  };
+
+ public:
+  /// Use create(); the key keeps construction inside it.
+  explicit Device(CreationKey) {}
+  /// Creates the device; on failure returns null with a one-line reason.
+  static std::unique_ptr<Device> create(const DeviceOptions& options, std::string* error);
+  ~Device();
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+
+  VkInstance instance() const { return instance_; }
+  VkPhysicalDevice physicalDevice() const { return physical_; }
+  VkDevice handle() const { return device_; }
+  VkQueue queue() const { return queue_; }
+  uint32_t queueFamily() const { return queueFamily_; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  const std::string& name() const { return name_; }
+  bool isCpu() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+  const DeviceFeatures& features() const { return features_; }
+  /// Nanoseconds per timestamp tick.
+  double timestampPeriod() const { return properties_.limits.timestampPeriod; }
+  bool supportsFormat(VkFormat format, VkFormatFeatureFlags features, bool optimalTiling = true) const;
+
+  /// Allocates memory for `requirements` with `properties` (host-visible memory is
+  /// mapped persistently). Throws VulkanError when no memory type fits.
+  Allocation allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties) const;
+
+  VkSampler sampler(SamplerKind kind) const { return samplers_[size_t(kind)]; }
+
+  /// Records commands into a temporary command buffer, submits and waits (uploads,
+  /// read-backs, one-off work).
+  void submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;
+
+  /// Validation messages (errors and warnings) since creation or the last clear.
+  size_t validationErrorCount() const;
+  std::vector<std::string> validationMessages() const;
+  void clearValidationMessages();
+  bool validationEnabled() const { return validation_; }
+
+  /// Names objects for validation messages and GPU debuggers (no-op without debug utils).
+  void setName(VkObjectType type, uint64_t handle, const std::string& name) const;
+
+  /// VK_KHR_push_descriptor's entry point (always present: the extension is required).
+  PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+
+ private:
+  void createSamplers();
+  void recordValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity, const char* message);
+  static VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                      VkDebugUtilsMessageTypeFlagsEXT types,
+                                                      const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                      void* user);
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queueFamily_ = 0;
+  VkCommandPool oneShotPool_ = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties properties_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+  std::string name_;
+  DeviceFeatures features_;
+  bool validation_ = false;
+  bool debugUtils_ = false;
+  PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
+  VkSampler samplers_[size_t(SamplerKind::Count)] = {};
+
+  mutable std::mutex messagesMutex_;
+  std::vector<std::string> messages_;
+  size_t errorCount_ = 0;
+  mutable std::mutex submitMutex_;
+};
+
+}  // namespace bounce::gpu

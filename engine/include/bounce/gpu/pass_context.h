@@ -1,0 +1,93 @@
+#pragma once
+// What a pass's record callback receives: the command buffer, its resources as GPU
+// objects, pipelines, the scene on the GPU and helpers for the usual recording steps.
+// The graph has already issued every barrier the pass needs.
+
+#include "bounce/frame/frame_context.h"
+#include "bounce/gpu/bindings.h"
+#include "bounce/gpu/gpu_scene.h"
+#include "bounce/gpu/pipeline.h"
+#include "bounce/graph/resource.h"
+
+#include <glm/glm.hpp>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace bounce {
+
+struct ColorTarget {
+  TextureHandle texture;
+  std::optional<glm::vec4> clear;  ///< nullopt: keep (load) the contents
+};
+struct DepthTarget {
+  TextureHandle texture;
+  std::optional<float> clear;
+};
+struct RenderingInfo {
+  std::vector<ColorTarget> colors;
+  std::optional<DepthTarget> depth;
+  std::optional<uint32_t> layer;  ///< render into one layer (shadow-map layer, cube face)
+};
+
+class PassContext {
+ public:
+  virtual ~PassContext() = default;
+
+  virtual VkCommandBuffer cmd() const = 0;
+  virtual const gpu::Device& device() const = 0;
+  virtual gpu::PipelineCache& pipelines() const = 0;
+  virtual const FrameContext& frame() const = 0;
+  virtual const gpu::GpuScene& scene() const = 0;
+
+  /// This pass's resources. Throws std::logic_error for a handle the pass did not declare.
+  virtual const gpu::Image& image(TextureHandle handle) const = 0;
+  virtual const gpu::Buffer& buffer(BufferHandle handle) const = 0;
+  /// The layout the graph put the image in for this pass.
+  virtual VkImageLayout layout(TextureHandle handle) const = 0;
+  /// False for an optional read whose producer was culled (or an invalid handle).
+  virtual bool available(TextureHandle handle) const = 0;
+  virtual bool available(BufferHandle handle) const = 0;
+
+  // --- recording helpers --------------------------------------------------------------
+  /// Binds the pipeline and pushes its descriptors.
+  void bind(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings) const;
+  void pushConstants(const gpu::Pipeline& pipeline, const void* data, uint32_t bytes) const;
+  template <class T>
+  void pushConstants(const gpu::Pipeline& pipeline, const T& value) const {
+    pushConstants(pipeline, &value, uint32_t(sizeof(T)));
+  }
+  /// bind + push constants + vkCmdDispatch with enough groups to cover `threads`.
+  void dispatchThreads(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings, glm::uvec3 threads,
+                       const void* push = nullptr, uint32_t pushBytes = 0) const;
+  template <class T>
+  void dispatchThreads(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings, glm::uvec3 threads,
+                       const T& push) const {
+    dispatchThreads(pipeline, bindings, threads, &push, uint32_t(sizeof(T)));
+  }
+
+  /// Dynamic rendering into graph textures; sets a full-target viewport and scissor.
+  void beginRendering(const RenderingInfo& info) const;
+  void endRendering() const;
+
+  /// Draws every scene draw accepted by `filter` with `pipeline` (VertexInput::Scene).
+  /// Per draw it pushes `common` plus the material's textures (bound to the names
+  /// baseColorTexture, metallicRoughnessTexture, normalTexture, emissiveTexture where the
+  /// pipeline declares them) and the push constants {uint instance; uint material;
+  /// uint pad[2];} at offset 0, followed by `extraPush` at offset 16 (see scene.glsl's
+  /// SCENE_DRAW_PUSH_CONSTANTS).
+  void drawScene(const gpu::Pipeline& pipeline, const gpu::Bindings& common,
+                 const std::function<bool(const gpu::GpuDraw&)>& filter = {}, const void* extraPush = nullptr,
+                 uint32_t extraPushBytes = 0) const;
+
+  /// The resolved descriptor writes for `bindings` (for custom binding code).
+  gpu::DescriptorWrites resolve(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings) const;
+
+ protected:
+  /// Set between beginRendering and endRendering, so the executor can close a render
+  /// pass that a failing record callback left open.
+  mutable bool renderingActive_ = false;
+};
+
+}  // namespace bounce

@@ -1,0 +1,105 @@
+#include "renderer/renderer.h"
+
+#include "bounce/core/log.h"
+
+#include <glm/gtc/packing.hpp>
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace bounce {
+
+std::filesystem::path Renderer::defaultShaderCache() {
+  if (const char* p = std::getenv("BOUNCE_SHADER_CACHE"); p && *p) return p;
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x)
+    return std::filesystem::path(x) / "bounce" / "shaders";
+  if (const char* h = std::getenv("HOME"); h && *h)
+    return std::filesystem::path(h) / ".cache" / "bounce" / "shaders";
+  return {};
+}
+
+Renderer::Renderer(Engine& engine, const gpu::Device& device, RendererOptions options)
+    : engine_(engine), device_(device) {
+  std::filesystem::path cache = options.shaderCache.empty() ? defaultShaderCache() : options.shaderCache;
+  compiler_ = std::make_unique<gpu::ShaderCompiler>(
+      engine.root(),
+      std::vector<std::filesystem::path>{engine.root() / "engine" / "include" / "bounce" / "shaders"}, cache);
+  pipelines_ = std::make_unique<gpu::PipelineCache>(device, *compiler_);
+  scene_ = std::make_unique<gpu::GpuScene>(device);
+  executor_ = std::make_unique<gpu::GraphExecutor>(device, *pipelines_);
+  pipeline_ = std::make_unique<DeferredPipeline>(engine.rendererSettings(), &device);
+}
+
+Renderer::~Renderer() { vkDeviceWaitIdle(device_.handle()); }
+
+RenderedFrame Renderer::render(const FrameView& view, const FrameOutputs& outputs, uint64_t frameIndex) {
+  const Scene* scene = engine_.scene();
+  if (!scene) throw std::logic_error("Renderer::render without a scene");
+  scene_->update(*scene);
+  RenderedFrame out;
+  PostProcessSettings pp = PostProcessSettings::blend(*scene, engine_.cvars(), view.position, &out.warnings);
+  FrameContext frame{*scene, engine_.cvars(), view, pp, frameIndex, engine_.technique()};
+  RenderGraph graph;
+  engine_.buildFrame(graph, frame, pipeline_->stages(outputs, &readbacks_));
+  out.gpu = gpu::runFrame(*executor_, graph, frame, *scene_, &out.graph);
+
+  auto want = [&](const std::string& name) {
+    auto it = readbacks_.find(name);
+    if (it == readbacks_.end()) return;
+    out.images[name] = convert(name, it->second, view);
+  };
+  if (outputs.display) want("display");
+  for (const std::string& aov : outputs.aovs) want(aov);
+  return out;
+}
+
+ImageBuffer Renderer::convert(const std::string& name, const Readback& rb, const FrameView& view) const {
+  const bool depth = name == "depth";
+  const uint32_t channels = depth ? 1 : name == "display" ? 4 : 3;
+  ImageBuffer img(rb.width, rb.height, channels, 0.0f);
+  // A channel nobody produced this frame (no GI plugin, no indirect light) is zero.
+  if (!rb.produced || !rb.buffer) return img;
+  const uint8_t* data = static_cast<const uint8_t*>(rb.buffer->mapped());
+  const size_t n = size_t(rb.width) * rb.height;
+  auto srgbDecode = [](float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+  };
+  const glm::mat4 inverseProjection = glm::inverse(view.projection);
+  for (size_t i = 0; i < n; ++i) {
+    float* px = &img.pixels[i * channels];
+    switch (rb.format) {
+      case VK_FORMAT_R16G16B16A16_SFLOAT: {
+        const auto* h = reinterpret_cast<const uint16_t*>(data) + i * 4;
+        for (uint32_t c = 0; c < channels; ++c) px[c] = glm::unpackHalf1x16(h[c]);
+        break;
+      }
+      case VK_FORMAT_R8G8B8A8_SRGB:
+      case VK_FORMAT_R8G8B8A8_UNORM: {
+        const uint8_t* b = data + i * 4;
+        const bool decode = rb.format == VK_FORMAT_R8G8B8A8_SRGB;
+        for (uint32_t c = 0; c < channels; ++c) {
+          float v = float(b[c]) / 255.0f;
+          px[c] = decode && c < 3 ? srgbDecode(v) : v;
+        }
+        break;
+      }
+      case VK_FORMAT_D32_SFLOAT: {
+        float d = reinterpret_cast<const float*>(data)[i];
+        if (d >= 1.0f || !std::isfinite(d)) {
+          px[0] = 0.0f;  // nothing drawn: no distance
+        } else {
+          glm::vec4 p = inverseProjection * glm::vec4(0.0f, 0.0f, d, 1.0f);
+          px[0] = std::abs(p.w) > 1e-30f ? -p.z / p.w : 0.0f;
+        }
+        break;
+      }
+      default:
+        break;
+    }
+    for (uint32_t c = 0; c < channels; ++c)
+      if (!std::isfinite(px[c])) px[c] = 0.0f;  // never hand NaN/Inf to a file
+  }
+  return img;
+}
+
+}  // namespace bounce

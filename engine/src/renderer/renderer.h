@@ -1,0 +1,67 @@
+#pragma once
+// Renders the engine's scene on a device: the GPU scene, shader compiler, pipeline
+// cache, graph executor and the deferred pipeline, one frame per call. Used by
+// bounce-render, the viewer, benchmarks and the GPU tests.
+
+#include "bounce/engine.h"
+#include "bounce/gpu/device.h"
+#include "bounce/gpu/gpu_scene.h"
+#include "bounce/gpu/pipeline.h"
+#include "bounce/gpu/shader_compiler.h"
+#include "bounce/image/image_buffer.h"
+#include "gpu/graph_executor.h"
+#include "renderer/deferred_pipeline.h"
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace bounce {
+
+struct RendererOptions {
+  /// SPIR-V cache folder. Empty: $BOUNCE_SHADER_CACHE, else ~/.cache/bounce/shaders.
+  std::filesystem::path shaderCache;
+};
+
+struct RenderedFrame {
+  gpu::FrameResult gpu;  ///< per-pass GPU milliseconds, recording errors
+  CompiledGraph graph;
+  /// "display" (display-encoded RGBA, 0..1) and the requested AOVs (linear floats:
+  /// RGB, or one channel for depth in metres along the view axis, 0 where nothing was hit).
+  std::map<std::string, ImageBuffer> images;
+  std::vector<std::string> warnings;  ///< post-process volume problems
+};
+
+class Renderer {
+ public:
+  Renderer(Engine& engine, const gpu::Device& device, RendererOptions options = {});
+  ~Renderer();
+
+  /// Renders the engine's current scene from `view`. Throws std::logic_error without a
+  /// scene, gpu::ShaderError / gpu::VulkanError on shader or device failures.
+  RenderedFrame render(const FrameView& view, const FrameOutputs& outputs, uint64_t frameIndex);
+
+  gpu::ShaderCompiler& shaders() { return *compiler_; }
+  gpu::PipelineCache& pipelines() { return *pipelines_; }
+  gpu::GpuScene& gpuScene() { return *scene_; }
+  gpu::GraphExecutor& executor() { return *executor_; }
+  const gpu::Device& device() const { return device_; }
+
+  static std::filesystem::path defaultShaderCache();
+
+ private:
+  ImageBuffer convert(const std::string& name, const Readback& readback, const FrameView& view) const;
+
+  Engine& engine_;
+  const gpu::Device& device_;
+  std::unique_ptr<gpu::ShaderCompiler> compiler_;
+  std::unique_ptr<gpu::PipelineCache> pipelines_;
+  std::unique_ptr<gpu::GpuScene> scene_;
+  std::unique_ptr<gpu::GraphExecutor> executor_;
+  std::unique_ptr<DeferredPipeline> pipeline_;
+  Readbacks readbacks_;
+};
+
+}  // namespace bounce

@@ -1,0 +1,103 @@
+// bounce-render's command-line contract: outputs it writes and one-line errors with
+// exit status 2 for bad arguments and bad input.
+
+#include "bounce/image/image_buffer.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace bounce {
+namespace {
+
+struct CommandResult {
+  int status;
+  std::string output;
+};
+
+CommandResult run(const std::string& args) {
+  std::string cmd = std::string("cd ") + BOUNCE_SOURCE_DIR +
+                    " && BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR + "/shader-cache " +
+                    BOUNCE_BINARY_DIR + "/bin/bounce-render " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  CommandResult r{-1, {}};
+  if (!p) return r;
+  std::array<char, 4096> buf;
+  while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
+  int status = pclose(p);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string scratch(const std::string& name) {
+  auto dir = std::filesystem::path(BOUNCE_BINARY_DIR) / "cli-test";
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+TEST(BounceRenderCli, RendersPngAovsAndStats) {
+  const std::string png = scratch("cornell.png"), exr = scratch("radiance.exr"),
+                    stats = scratch("stats.json");
+  CommandResult r =
+      run("--scene content/cornell_box.gltf --gi Ambient --width 48 --height 32 --frames 2 --out " + png +
+          " --aov radiance=" + exr + " --stats " + stats);
+  ASSERT_EQ(r.status, 0) << r.output;
+  ImageBuffer img;
+  std::string error;
+  ASSERT_TRUE(readPng(png, img, &error)) << error;
+  EXPECT_EQ(img.width, 48u);
+  EXPECT_EQ(img.height, 32u);
+  ASSERT_TRUE(readExr(exr, img, &error)) << error;
+  EXPECT_EQ(img.width, 48u);
+  EXPECT_EQ(img.nonFiniteCount(), 0u);
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
+  EXPECT_EQ(j["timedFrames"], 1);
+  EXPECT_FALSE(j["device"].get<std::string>().empty());
+  bool lighting = false;
+  for (const auto& p : j["passes"]) lighting = lighting || p["name"] == "Lighting";
+  EXPECT_TRUE(lighting);
+  EXPECT_TRUE(j["resources"].size() > 3);
+  EXPECT_NE(r.output.find("Lighting"), std::string::npos) << r.output;  // the per-pass table
+}
+
+struct BadInput {
+  const char* name;
+  const char* args;
+  const char* message;
+};
+
+class BounceRenderBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BounceRenderBadInput, ExitsWithStatusTwoAndOneClearLine) {
+  CommandResult r = run(GetParam().args);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(GetParam().message), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("Segmentation"), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BounceRenderBadInput,
+    ::testing::Values(BadInput{"MissingScene", "--scene content/nope.gltf", "content/nope.gltf"},
+                      BadInput{"UnreadableGltf", "--scene README.md", "README.md"},
+                      BadInput{"UnknownAov", "--scene content/cornell_box.gltf --aov radiancy=x.exr",
+                               "unknown AOV 'radiancy' (did you mean 'radiance'?)"},
+                      BadInput{"ZeroWidth", "--scene content/cornell_box.gltf --width 0", "--width"},
+                      BadInput{"HugeHeight", "--scene content/cornell_box.gltf --height 99999", "--height"},
+                      BadInput{
+                          "UnknownCVar", "--scene content/cornell_box.gltf --set r.Bloom.Intensty=0",
+                          "unknown console variable 'r.Bloom.Intensty' (did you mean 'r.Bloom.Intensity'?)"},
+                      BadInput{"OutOfRangeCVar", "--scene content/cornell_box.gltf --set r.Shadow.MapSize=3",
+                               "r.Shadow.MapSize: 3 is not one of"},
+                      BadInput{"UnknownTechnique", "--scene content/cornell_box.gltf --gi Voxels",
+                               "no GI technique 'Voxels'"},
+                      BadInput{"MissingIni", "--scene content/cornell_box.gltf --ini /nonexistent.ini",
+                               "/nonexistent.ini"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace bounce

@@ -1,0 +1,74 @@
+#pragma once
+// A GPU test fixture: an engine on the repository's config, lavapipe (or the device the
+// environment names) with validation layers on, and a renderer. Every test ends by
+// checking that the validation layer reported no errors.
+
+#include "bounce/engine.h"
+#include "bounce/gpu/device.h"
+#include "bounce/image/image_buffer.h"
+#include "renderer/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace bounce::test {
+
+class RenderFixture : public ::testing::Test {
+ protected:
+  /// Creates the engine with `sets` at command-line priority and loads `scene`
+  /// (relative to the repository).
+  void start(const std::string& scene, std::vector<std::string> sets = {}, std::string technique = "none") {
+    EngineOptions o;
+    o.root = BOUNCE_SOURCE_DIR;
+    o.userIni = std::filesystem::path();
+    o.defaultPluginDirs = false;
+    o.pluginDirs = {std::filesystem::path(BOUNCE_BINARY_DIR) / "plugins"};
+    o.sets = std::move(sets);
+    o.technique = std::move(technique);
+    engine = std::make_unique<Engine>(std::move(o));
+    ASSERT_TRUE(engine->commandLineErrors().empty()) << engine->commandLineErrors().front();
+    GltfLoadResult r = engine->loadScene(std::string(BOUNCE_SOURCE_DIR) + "/" + scene);
+    ASSERT_TRUE(r.scene || engine->scene()) << r.error;
+    std::string error;
+    device = gpu::Device::create({.validation = true}, &error);
+    ASSERT_TRUE(device) << error;
+    renderer = std::make_unique<Renderer>(
+        *engine, *device, RendererOptions{std::filesystem::path(BOUNCE_BINARY_DIR) / "shader-cache"});
+  }
+
+  FrameView view(uint32_t width, uint32_t height) const {
+    const Scene& s = *engine->scene();
+    return FrameView::fromCamera(s.cameras().empty() ? Camera{} : s.cameras().front(), width, height);
+  }
+
+  RenderedFrame render(uint32_t width, uint32_t height, std::vector<std::string> aovs, bool display = false) {
+    FrameOutputs out;
+    out.aovs = std::move(aovs);
+    out.display = display;
+    RenderedFrame f = renderer->render(view(width, height), out, frame_++);
+    EXPECT_TRUE(f.gpu.ok()) << f.gpu.errors.front();
+    return f;
+  }
+
+  void TearDown() override {
+    renderer.reset();
+    if (device) {
+      EXPECT_EQ(device->validationErrorCount(), 0u) << [&] {
+        std::string all;
+        for (const std::string& m : device->validationMessages()) all += m + "\n";
+        return all;
+      }();
+    }
+  }
+
+  std::unique_ptr<Engine> engine;
+  std::unique_ptr<gpu::Device> device;
+  std::unique_ptr<Renderer> renderer;
+
+ private:
+  uint64_t frame_ = 0;
+};
+
+}  // namespace bounce::test

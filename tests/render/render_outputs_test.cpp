@@ -1,0 +1,101 @@
+// AOV contents, what the graph runs with and without GI, and pass failures.
+
+#include "render_fixture.h"
+
+#include "bounce/gpu/pass_context.h"
+#include "bounce/graph/channels.h"
+
+#include <fstream>
+
+namespace bounce::test {
+namespace {
+
+class RenderOutputs : public RenderFixture {};
+
+TEST_F(RenderOutputs, AovsHaveTheDocumentedMeaning) {
+  start("content/tests/lambert_plane_directional.gltf");
+  RenderedFrame f = render(32, 32, {"albedo", "normal", "depth", "indirect-irradiance"});
+  // Albedo 0.5 (linear, decoded from the sRGB G-buffer to within its 8-bit step).
+  EXPECT_NEAR(f.images.at("albedo").at(16, 16, 0), 0.5f, 0.004f);
+  // The plane faces up.
+  EXPECT_NEAR(f.images.at("normal").at(16, 16, 1), 1.0f, 1e-3f);
+  // The camera is 2 m above the plane, looking straight down.
+  EXPECT_NEAR(f.images.at("depth").at(16, 16, 0), 2.0f, 2e-3f);
+  // No GI technique: no indirect irradiance, and zeros rather than garbage.
+  EXPECT_EQ(f.images.at("indirect-irradiance").at(16, 16, 0), 0.0f);
+}
+
+TEST_F(RenderOutputs, NoGiTechniqueAddsNoPassAndNoResource) {
+  start("content/cornell_box.gltf");
+  RenderedFrame none = render(32, 32, {"radiance"});
+  for (const CompiledPass& p : none.graph.passes) EXPECT_EQ(p.origin, "engine") << p.name;
+  for (const CompiledResource& r : none.graph.resources) EXPECT_EQ(r.name.rfind("gi.", 0), std::string::npos);
+}
+
+TEST_F(RenderOutputs, DebugViewReplacesTheDisplayedImageAndCullsToneMapping) {
+  start("content/cornell_box.gltf");
+  // A plugin-like hook that publishes a debug view.
+  engine->hooks().add(
+      {.name = "Test.Debug",
+       .point = ExtensionPoint::DebugView,
+       .setup =
+           [](RenderGraph& g, const FrameContext&) {
+             g.addPass("Test.Debug", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+               TextureHandle t =
+                   b.write(b.createTexture("Test.Debug", TextureDesc::viewSized(VK_FORMAT_R8G8B8A8_UNORM)),
+                           Access::TransferDst);
+               g.blackboard().setTexture(channels::DebugView, t);
+               return [=](PassContext& ctx) {
+                 VkClearColorValue red{{1.0f, 0.0f, 0.0f, 1.0f}};
+                 VkImageSubresourceRange range = ctx.image(t).fullRange();
+                 vkCmdClearColorImage(ctx.cmd(), ctx.image(t).handle(), ctx.layout(t), &red, 1, &range);
+               };
+             });
+           }},
+      kEngineOwner, "test", "");
+  RenderedFrame f = render(16, 16, {}, true);
+  EXPECT_FALSE(f.graph.executed("Tonemap"));
+  EXPECT_FALSE(f.graph.executed("Bloom"));
+  EXPECT_FLOAT_EQ(f.images.at("display").at(8, 8, 0), 1.0f);
+  EXPECT_FLOAT_EQ(f.images.at("display").at(8, 8, 1), 0.0f);
+}
+
+TEST_F(RenderOutputs, ShaderCompileErrorNamesFileAndLineAndTheFrameGoesOn) {
+  start("content/tests/emissive_quad.gltf");
+  const std::filesystem::path broken = std::filesystem::path(BOUNCE_BINARY_DIR) / "broken_test_shader.comp";
+  std::ofstream(broken) << "#version 460\nlayout(local_size_x = 1) in;\nvoid main() {\n  float x = ;\n}\n";
+  engine->hooks().add({.name = "Test.Broken",
+                       .point = ExtensionPoint::BeforePostProcess,
+                       .setup =
+                           [broken](RenderGraph& g, const FrameContext&) {
+                             g.addPass("Test.Broken", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+                               b.sideEffect("test");
+                               return [broken](PassContext& ctx) { ctx.pipelines().compute({broken, {}}); };
+                             });
+                           }},
+                      kEngineOwner, "test", "");
+  FrameOutputs out;
+  out.aovs = {"radiance"};
+  RenderedFrame f = renderer->render(view(16, 16), out, 0);
+  ASSERT_EQ(f.gpu.errors.size(), 1u);
+  EXPECT_NE(f.gpu.errors[0].find("pass 'Test.Broken' failed"), std::string::npos) << f.gpu.errors[0];
+  EXPECT_NE(f.gpu.errors[0].find("broken_test_shader.comp:4:"), std::string::npos) << f.gpu.errors[0];
+  // The other passes ran: the emissive quad is still there.
+  EXPECT_NEAR(f.images.at("radiance").at(8, 8, 0), 2.0f, 0.02f);
+}
+
+TEST_F(RenderOutputs, PerPassTimingsCoverEveryExecutedPass) {
+  start("content/cornell_box.gltf");
+  RenderedFrame f = render(32, 32, {});
+  EXPECT_EQ(f.gpu.passes.size(), f.graph.executedCount());
+  double sum = 0.0;
+  for (const auto& p : f.gpu.passes) {
+    EXPECT_GE(p.milliseconds, 0.0) << p.name;
+    sum += p.milliseconds;
+  }
+  EXPECT_GT(f.gpu.frameMilliseconds, 0.0);
+  EXPECT_LE(sum, f.gpu.frameMilliseconds * 1.01 + 0.01);
+}
+
+}  // namespace
+}  // namespace bounce::test
