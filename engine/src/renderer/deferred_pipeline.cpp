@@ -221,7 +221,7 @@ void DeferredPipeline::lighting(RenderGraph& g, const FrameContext& frame) const
         b.write(b.createTexture(std::string(channels::DirectLighting), hdr), Access::StorageWrite);
     bb.setTexture(channels::SceneColor, radiance);
     bb.setTexture(channels::DirectLighting, direct);
-    return [=](PassContext& ctx) mutable {
+    return [=, this](PassContext& ctx) mutable {
       // Shadows and GI channels whose producers were culled read as black; the flags
       // tell the shader which ones to use.
       push.flags = (ctx.available(diffuse) ? 1u : 0u) | (ctx.available(specular) ? 2u : 0u) |
