@@ -1,5 +1,6 @@
 // bounce-render's command-line contract: outputs it writes and one-line errors with
-// exit status 2 for bad arguments and bad input.
+// exit status 2 for bad arguments and bad input. Runs validate (exit status 3 on a
+// validation error).
 
 #include "bounce/image/image_buffer.h"
 
@@ -22,7 +23,7 @@ struct CommandResult {
 
 CommandResult run(const std::string& args) {
   std::string cmd = std::string("cd ") + BOUNCE_SOURCE_DIR +
-                    " && BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR + "/shader-cache " +
+                    " && BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR + "/shader-cache " +
                     BOUNCE_BINARY_DIR + "/bin/bounce-render " + args + " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   CommandResult r{-1, {}};

@@ -16,7 +16,7 @@
 #include "bounce/engine.h"
 #include "bounce/gpu/device.h"
 #include "bounce/image/image_buffer.h"
-#include "render_stats.h"
+#include "renderer/render_stats.h"
 #include "renderer/renderer.h"
 
 #include <fmt/format.h>

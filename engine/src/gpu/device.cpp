@@ -84,8 +84,29 @@ int typeScore(VkPhysicalDeviceType t) {
   }
 }
 
+// The queue family Bounce uses: graphics, compute, timestamps and, with a surface,
+// presentation; -1 when there is none.
+int32_t queueFamilyFor(VkPhysicalDevice pd, VkSurfaceKHR surface) {
+  uint32_t n = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
+  std::vector<VkQueueFamilyProperties> families(n);
+  vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, families.data());
+  for (uint32_t i = 0; i < n; ++i) {
+    const auto& q = families[i];
+    if (!(q.queueFlags & VK_QUEUE_GRAPHICS_BIT) || !(q.queueFlags & VK_QUEUE_COMPUTE_BIT) || !q.timestampValidBits)
+      continue;
+    if (surface) {
+      VkBool32 present = VK_FALSE;
+      vkGetPhysicalDeviceSurfaceSupportKHR(pd, i, surface, &present);
+      if (!present) continue;
+    }
+    return int32_t(i);
+  }
+  return -1;
+}
+
 // Why a device cannot run Bounce, or "" when it can.
-std::string unsuitable(VkPhysicalDevice pd) {
+std::string unsuitable(VkPhysicalDevice pd, VkSurfaceKHR surface) {
   VkPhysicalDeviceProperties p;
   vkGetPhysicalDeviceProperties(pd, &p);
   if (p.apiVersion < VK_API_VERSION_1_3) return "Vulkan 1.3 is required";
@@ -115,9 +136,14 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
     return nullptr;
   };
   auto d = std::make_unique<Device>(CreationKey{});
-  d->validation_ = options.validation || envFlag("BOUNCE_VALIDATION");
+#ifdef NDEBUG
+  constexpr bool kDebugBuild = false;
+#else
+  constexpr bool kDebugBuild = true;  // debug builds always validate
+#endif
+  d->validation_ = options.validation || envFlag("BOUNCE_VALIDATION") || kDebugBuild;
   if (d->validation_ && !hasLayer(kValidationLayer)) {
-    if (options.validation)
+    if (options.validation && !kDebugBuild)
       return fail("the Vulkan validation layer is not installed (Debian package vulkan-validationlayers)");
     log::warn("BOUNCE_VALIDATION is set but the validation layer is not installed; running without it");
     d->validation_ = false;
@@ -128,6 +154,8 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   if (d->validation_) layers.push_back(kValidationLayer);
   std::vector<const char*> extensions;
   for (const std::string& e : options.instanceExtensions) extensions.push_back(e.c_str());
+  if (options.createSurface && options.instanceExtensions.empty())
+    return fail("a window surface needs the window system's instance extensions (DeviceOptions::instanceExtensions)");
   if (d->debugUtils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -157,6 +185,10 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   if (d->debugUtils_)
     d->setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
         vkGetInstanceProcAddr(d->instance_, "vkSetDebugUtilsObjectNameEXT"));
+  if (options.createSurface) {
+    d->surface_ = options.createSurface(d->instance_);
+    if (!d->surface_) return fail("cannot create a window surface");
+  }
   if (d->validation_ && d->debugUtils_) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(d->instance_, "vkCreateDebugUtilsMessengerEXT"));
@@ -178,7 +210,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
     VkPhysicalDeviceProperties p;
     vkGetPhysicalDeviceProperties(pd, &p);
     names.push_back(p.deviceName);
-    std::string why = unsuitable(pd);
+    std::string why = unsuitable(pd, d->surface_);
     if (!why.empty()) {
       reasons.push_back(fmt::format("{}: {}", p.deviceName, why));
       continue;
@@ -203,16 +235,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   vkGetPhysicalDeviceMemoryProperties(best, &d->memory_);
   d->name_ = d->properties_.deviceName;
 
-  uint32_t familyCount = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(best, &familyCount, nullptr);
-  std::vector<VkQueueFamilyProperties> families(familyCount);
-  vkGetPhysicalDeviceQueueFamilyProperties(best, &familyCount, families.data());
-  for (uint32_t i = 0; i < familyCount; ++i)
-    if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) &&
-        families[i].timestampValidBits > 0) {
-      d->queueFamily_ = i;
-      break;
-    }
+  d->queueFamily_ = uint32_t(queueFamilyFor(best, d->surface_));
 
   // Features: required ones on, optional ones on where supported (reported in features()).
   const auto exts = deviceExtensions(best);
@@ -270,7 +293,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
 
   std::vector<const char*> deviceExts{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (hasAtomicFloat) deviceExts.push_back(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
-  if (options.presentation) deviceExts.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  if (d->surface_) deviceExts.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 
   float priority = 1.0f;
   VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -308,6 +331,7 @@ Device::~Device() {
     if (oneShotPool_) vkDestroyCommandPool(device_, oneShotPool_, nullptr);
     vkDestroyDevice(device_, nullptr);
   }
+  if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
   if (messenger_) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));

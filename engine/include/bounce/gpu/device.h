@@ -21,12 +21,15 @@ struct DeviceOptions {
   /// Substring of the device name to use (case-insensitive). Empty: $BOUNCE_DEVICE, else
   /// the best GPU (discrete > integrated > virtual), else lavapipe (the CPU device).
   std::string preferredDevice;
-  /// Khronos validation layer with a message counter. Also on with $BOUNCE_VALIDATION=1.
+  /// Khronos validation layer with a message counter. Also on with $BOUNCE_VALIDATION=1
+  /// and in debug builds.
   bool validation = false;
   /// Extra instance extensions (a window system's surface extensions).
   std::vector<std::string> instanceExtensions;
-  /// Enables VK_KHR_swapchain (the viewer).
-  bool presentation = false;
+  /// For a window: creates the surface once the instance exists (e.g. with
+  /// glfwCreateWindowSurface). The device then needs a queue that can present to it,
+  /// enables VK_KHR_swapchain, and owns the surface.
+  std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 /// Optional features plugins may depend on (checked, never assumed).
@@ -90,6 +93,8 @@ class Device {
   VkPhysicalDevice physicalDevice() const { return physical_; }
   VkDevice handle() const { return device_; }
   VkQueue queue() const { return queue_; }
+  /// The window surface (VK_NULL_HANDLE when headless).
+  VkSurfaceKHR surface() const { return surface_; }
   uint32_t queueFamily() const { return queueFamily_; }
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   const std::string& name() const { return name_; }
@@ -132,6 +137,7 @@ class Device {
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queueFamily_ = 0;

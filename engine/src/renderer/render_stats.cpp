@@ -1,4 +1,4 @@
-#include "render_stats.h"
+#include "renderer/render_stats.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -16,6 +16,11 @@ double RenderStats::median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double RenderStats::passMedian(const std::string& pass) const {
+  auto it = passMs_.find(pass);
+  return it == passMs_.end() ? 0.0 : median(it->second);
 }
 
 void RenderStats::addFrame(const gpu::FrameResult& frame) {

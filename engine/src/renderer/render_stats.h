@@ -18,6 +18,10 @@ class RenderStats {
   void setGraph(const CompiledGraph& graph, const gpu::MemoryReport& memory);
 
   std::string table() const;
+  /// Passes in execution order, and their medians.
+  const std::vector<std::string>& passes() const { return order_; }
+  double passMedian(const std::string& pass) const;
+  double frameMedian() const { return median(frameMs_); }
   bool writeJson(const std::string& path, std::string* error) const;
 
   static double median(std::vector<double> values);

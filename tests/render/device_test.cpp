@@ -1,0 +1,185 @@
+// The device layer on its own: memory, buffers, images with mips and layers, compute
+// pipelines with reflection-driven binding, read-back, and the validation counter.
+
+#include "bounce/gpu/buffer.h"
+#include "bounce/gpu/device.h"
+#include "bounce/gpu/image.h"
+#include "bounce/gpu/pipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/packing.hpp>
+
+#include <cstring>
+
+namespace bounce::gpu {
+namespace {
+
+class DeviceTest : public ::testing::Test {
+protected:
+  void SetUp() override {
+    std::string error;
+    device = Device::create({.validation = true}, &error);
+    ASSERT_TRUE(device) << error;
+  }
+  void TearDown() override {
+    if (device && expectClean) {
+      EXPECT_EQ(device->validationErrorCount(), 0u) << [&] {
+        std::string all;
+        for (const auto& m : device->validationMessages()) all += m + "\n";
+        return all;
+      }();
+    }
+  }
+  std::unique_ptr<Device> device;
+  bool expectClean = true;
+};
+
+TEST_F(DeviceTest, PicksAUsableDeviceAndNamesIt) {
+  EXPECT_FALSE(device->name().empty());
+  EXPECT_GT(device->timestampPeriod(), 0.0);
+  EXPECT_NE(device->cmdPushDescriptorSet, nullptr);
+  for (int k = 0; k < int(SamplerKind::Count); ++k) EXPECT_NE(device->sampler(SamplerKind(k)), VK_NULL_HANDLE);
+}
+
+TEST_F(DeviceTest, UnknownDeviceNameIsAClearError) {
+  std::string error;
+  auto none = Device::create({.preferredDevice = "NoSuchGpu9000"}, &error);
+  EXPECT_EQ(none, nullptr);
+  EXPECT_NE(error.find("no usable Vulkan device matches 'NoSuchGpu9000'"), std::string::npos) << error;
+}
+
+TEST_F(DeviceTest, BufferUploadAndReadBack) {
+  Buffer local(*device, 1024, VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+               MemoryUsage::DeviceLocal, "local");
+  std::vector<uint32_t> data(256);
+  for (uint32_t i = 0; i < 256; ++i) data[i] = i * 7 + 3;
+  local.upload(*device, std::span<const uint32_t>(data));
+  Buffer back(*device, 1024, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback, "back");
+  device->submitAndWait([&](VkCommandBuffer cmd) {
+    VkBufferCopy copy{0, 0, 1024};
+    vkCmdCopyBuffer(cmd, local.handle(), back.handle(), 1, &copy);
+  });
+  EXPECT_EQ(std::memcmp(back.mapped(), data.data(), 1024), 0);
+}
+
+TEST_F(DeviceTest, ThreeDimensionalImageRoundTrip) {
+  TextureDesc d{.type = TextureType::Tex3D, .format = VK_FORMAT_R8G8B8A8_UNORM, .width = 8, .height = 4, .depth = 2};
+  Image image(*device, d, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  std::vector<uint8_t> texels(8 * 4 * 2 * 4);
+  for (size_t i = 0; i < texels.size(); ++i) texels[i] = uint8_t(i * 13);
+  uploadImage(*device, image, texels.data(), texels.size(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  EXPECT_EQ(readImage(*device, image, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL), texels);
+}
+
+TEST_F(DeviceTest, GeneratedMipsAverageTheLevelAbove) {
+  TextureDesc d{.format = VK_FORMAT_R8G8B8A8_UNORM, .width = 4, .height = 4, .mips = 3};
+  Image image(*device, d, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  // A checkerboard of 0 and 200: every coarser mip is its average, 100.
+  std::vector<uint8_t> texels(4 * 4 * 4);
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 4; ++x)
+      for (uint32_t c = 0; c < 4; ++c) texels[(y * 4 + x) * 4 + c] = ((x + y) % 2) ? 200 : 0;
+  uploadImage(*device, image, texels.data(), texels.size(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, true);
+  for (uint32_t mip = 1; mip < 3; ++mip) {
+    std::vector<uint8_t> m = readImage(*device, image, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, mip);
+    ASSERT_EQ(m.size(), size_t(4 >> mip) * (4 >> mip) * 4);
+    for (uint8_t v : m) EXPECT_NEAR(int(v), 100, 1) << "mip " << mip;
+  }
+}
+
+TEST_F(DeviceTest, MipCountIsClampedToTheChain) {
+  Image image(*device, TextureDesc{.width = 8, .height = 2, .mips = 10}, VK_IMAGE_USAGE_SAMPLED_BIT);
+  EXPECT_EQ(image.desc().mips, 4u);  // 8 → 4 → 2 → 1
+}
+
+TEST_F(DeviceTest, ComputePipelineBindsByNameAndPushesConstants) {
+  ShaderCompiler compiler(BOUNCE_SOURCE_DIR, {}, {});
+  PipelineCache cache(*device, compiler);
+  const Pipeline& p = cache.compute({"tests/render/shaders/fill.comp", {}});
+  EXPECT_EQ(p.localSize(), (std::array<uint32_t, 3>{4, 4, 1}));
+  ASSERT_NE(p.binding("target"), nullptr);
+  EXPECT_EQ(p.binding("target")->type, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
+  ASSERT_NE(p.binding("Values"), nullptr);
+  EXPECT_EQ(&cache.compute({"tests/render/shaders/fill.comp", {}}), &p);  // cached
+
+  const uint32_t w = 6, h = 5;
+  Image image(*device, TextureDesc{.format = VK_FORMAT_R32G32B32A32_SFLOAT, .width = w, .height = h},
+              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  Buffer values(*device, w * h * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUsage::Readback);
+  device->submitAndWait([&](VkCommandBuffer cmd) {
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    b.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image.handle();
+    b.subresourceRange = image.fullRange();
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dep);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.handle());
+    DescriptorWrites(p).storageImage("target", image.view()).buffer("Values", values.handle()).push(*device, cmd);
+    struct {
+      uint32_t w, h;
+      float scale;
+    } push{w, h, 0.25f};
+    vkCmdPushConstants(cmd, p.layout(), p.stages(), 0, sizeof(push), &push);
+    vkCmdDispatch(cmd, 2, 2, 1);
+    VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    mb.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    mb.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    mb.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+    mb.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    VkDependencyInfo dep2{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep2.memoryBarrierCount = 1;
+    dep2.pMemoryBarriers = &mb;
+    vkCmdPipelineBarrier2(cmd, &dep2);
+  });
+  const auto* v = static_cast<const uint32_t*>(values.mapped());
+  EXPECT_EQ(v[3 * w + 5], 3005u);
+  std::vector<uint8_t> px = readImage(*device, image, VK_IMAGE_LAYOUT_GENERAL);
+  const auto* f = reinterpret_cast<const float*>(px.data());
+  EXPECT_FLOAT_EQ(f[(4 * w + 2) * 4 + 0], 0.5f);  // x * scale
+  EXPECT_FLOAT_EQ(f[(4 * w + 2) * 4 + 1], 4.0f);  // y
+}
+
+TEST_F(DeviceTest, BindingMistakesAreReportedByName) {
+  ShaderCompiler compiler(BOUNCE_SOURCE_DIR, {}, {});
+  PipelineCache cache(*device, compiler);
+  const Pipeline& p = cache.compute({"tests/render/shaders/fill.comp", {}});
+  try {
+    DescriptorWrites(p).storageImage("targt", VK_NULL_HANDLE);
+    FAIL() << "an unknown binding name must throw";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no binding 'targt' (did you mean 'target'?)"), std::string::npos) << e.what();
+  }
+  device->submitAndWait([&](VkCommandBuffer cmd) {
+    try {
+      DescriptorWrites(p).buffer("Values", VK_NULL_HANDLE).push(*device, cmd);
+      FAIL() << "an unbound binding must throw";
+    } catch (const std::logic_error& e) {
+      EXPECT_NE(std::string(e.what()).find("binding 'target' was not bound"), std::string::npos) << e.what();
+    }
+  });
+}
+
+TEST_F(DeviceTest, ValidationErrorsAreCounted) {
+  // Deliberate misuse: a storage view of an image created without storage usage.
+  Image image(*device, TextureDesc{.width = 4, .height = 4}, VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  vi.image = image.handle();
+  vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  vi.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  VkImageView view = VK_NULL_HANDLE;
+  vkCreateImageView(device->handle(), &vi, nullptr, &view);
+  if (view) vkDestroyImageView(device->handle(), view, nullptr);
+  EXPECT_GE(device->validationErrorCount(), 1u);
+  device->clearValidationMessages();
+  EXPECT_EQ(device->validationErrorCount(), 0u);
+}
+
+}  // namespace
+}  // namespace bounce::gpu
