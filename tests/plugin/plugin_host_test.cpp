@@ -19,7 +19,9 @@ class PluginHostTest : public ::testing::Test {
   ObjectParameterRegistry parameters{cvars};
   PassHookRegistry hooks;
   DebugViewRegistry debugViews;
-  EngineServices services{cvars, console, config, parameters, hooks, debugViews};
+  AovRegistry aovs;
+  QualityKnobRegistry knobs;
+  EngineServices services{cvars, console, config, parameters, hooks, debugViews, aovs, knobs};
   PluginHost host{services};
 };
 
@@ -46,6 +48,10 @@ TEST_F(PluginHostTest, LoadsAPluginAndItsRegistrations) {
   EXPECT_TRUE(console.hasCommand("testgood.Hello"));
   EXPECT_EQ(console.execute("testgood.Hello").text(), "hello");
   EXPECT_NE(debugViews.find("TestGood: view"), nullptr);
+  ASSERT_NE(aovs.find("test-good"), nullptr);
+  EXPECT_EQ(aovs.find("test-good")->origin, "TestGood");
+  ASSERT_EQ(knobs.of("TestGood").size(), 1u);
+  EXPECT_EQ(knobs.of("testgood")[0]->desc.values, (std::vector<std::string>{"1", "7"}));
   // A GI technique's hooks run only while it is selected.
   EXPECT_EQ(hooks.at(ExtensionPoint::IndirectDiffuse, "TestGood").size(), 1u);
   EXPECT_TRUE(hooks.at(ExtensionPoint::IndirectDiffuse, "none").empty());
@@ -60,6 +66,8 @@ TEST_F(PluginHostTest, UnloadRemovesEverythingItRegistered) {
   EXPECT_EQ(parameters.find(ObjectKind::Material, "UsedWithTestGood"), nullptr);
   EXPECT_FALSE(console.hasCommand("testgood.Hello"));
   EXPECT_EQ(debugViews.find("TestGood: view"), nullptr);
+  EXPECT_EQ(aovs.find("test-good"), nullptr);
+  EXPECT_TRUE(knobs.of("TestGood").empty());
   EXPECT_TRUE(hooks.all().empty());
   // And it can come back.
   EXPECT_TRUE(host.load("TestGood"));

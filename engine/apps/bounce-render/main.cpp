@@ -77,19 +77,6 @@ int main(int argc, char** argv) {
     return fail(kBadInput, e.what());
   }
 
-  std::vector<AovRequest> aovs;
-  for (const std::string& a : aovArgs) {
-    size_t eq = a.find('=');
-    if (eq == std::string::npos || eq == 0 || eq + 1 == a.size())
-      return fail(kBadInput, fmt::format("--aov {}: expected NAME=FILE.exr", a));
-    std::string name = a.substr(0, eq);
-    const auto& known = bounce::aovNames();
-    if (std::find(known.begin(), known.end(), name) == known.end())
-      return fail(kBadInput, fmt::format("unknown AOV '{}'{} (AOVs: {})", name,
-                                         bounce::didYouMean(name, known), fmt::join(known, ", ")));
-    aovs.push_back({name, a.substr(eq + 1)});
-  }
-
   bounce::EngineOptions options;
   options.iniFiles = inis;
   options.sets = sets;
@@ -102,6 +89,20 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "bounce-render: {}\n", engine.commandLineErrors()[i]);
     return fail(kBadInput, engine.commandLineErrors().front());
   }
+  // AOV names are known once plugins have registered theirs.
+  std::vector<AovRequest> aovs;
+  for (const std::string& a : aovArgs) {
+    size_t eq = a.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == a.size())
+      return fail(kBadInput, fmt::format("--aov {}: expected NAME=FILE.exr", a));
+    std::string name = a.substr(0, eq);
+    const std::vector<std::string> known = engine.aovs().names();
+    if (!engine.aovs().find(name))
+      return fail(kBadInput, fmt::format("unknown AOV '{}'{} (AOVs: {})", name,
+                                         bounce::didYouMean(name, known), fmt::join(known, ", ")));
+    aovs.push_back({name, a.substr(eq + 1)});
+  }
+
   bounce::GltfLoadResult loaded = engine.loadScene(scenePath);
   if (!loaded.scene && !engine.scene()) return fail(kBadInput, loaded.error);
   const bounce::Scene& scene = *engine.scene();

@@ -60,6 +60,8 @@ class Engine {
   ObjectParameterRegistry& parameters() { return parameters_; }
   PassHookRegistry& hooks() { return hooks_; }
   DebugViewRegistry& debugViews() { return debugViews_; }
+  AovRegistry& aovs() { return aovs_; }
+  QualityKnobRegistry& qualityKnobs() { return knobs_; }
   PluginHost& plugins() { return *plugins_; }
   EngineServices& services() { return services_; }
 
@@ -100,7 +102,9 @@ class Engine {
   ObjectParameterRegistry parameters_{cvars_};
   PassHookRegistry hooks_;
   DebugViewRegistry debugViews_;
-  EngineServices services_{cvars_, console_, config_, parameters_, hooks_, debugViews_};
+  AovRegistry aovs_;
+  QualityKnobRegistry knobs_;
+  EngineServices services_{cvars_, console_, config_, parameters_, hooks_, debugViews_, aovs_, knobs_};
   std::unique_ptr<PluginHost> plugins_;
   std::unique_ptr<Scene> scene_;
 

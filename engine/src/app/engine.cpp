@@ -2,6 +2,7 @@
 
 #include "bounce/core/log.h"
 #include "bounce/core/names.h"
+#include "bounce/graph/channels.h"
 
 #include <fmt/format.h>
 
@@ -22,8 +23,8 @@ std::vector<std::string> normalizeCommandLine(int argc, const char* const* argv)
   std::vector<std::string> out;
   for (int i = 0; i < argc; ++i) {
     std::string a = argv[i];
-    const bool unrealLong = i > 0 && a.size() > 2 && a[0] == '-' && a[1] != '-' && std::isalpha(uint8_t(a[1])) &&
-                            std::isalpha(uint8_t(a[2]));
+    const bool unrealLong = i > 0 && a.size() > 2 && a[0] == '-' && a[1] != '-' &&
+                            std::isalpha(uint8_t(a[1])) && std::isalpha(uint8_t(a[2]));
     if (!unrealLong) {
       out.push_back(std::move(a));
       continue;
@@ -177,6 +178,22 @@ void Engine::registerEngineVariables() {
          return {};
        }});
   renderer_ = std::make_unique<RendererSettings>(cvars_);
+  // The engine's own outputs; plugins add theirs.
+  aovs_.add({"radiance", std::string(channels::SceneColor), 3, "HDR radiance before tone mapping, W/(m²·sr)"},
+            kEngineOwner, "engine");
+  aovs_.add({"direct", std::string(channels::DirectLighting), 3,
+             "emission + direct lighting from punctual lights, W/(m²·sr)"},
+            kEngineOwner, "engine");
+  aovs_.add({"indirect-irradiance", std::string(channels::IndirectDiffuse), 3,
+             "indirect diffuse irradiance E at the visible surface before albedo, W/m² (0 without GI)"},
+            kEngineOwner, "engine");
+  aovs_.add({"albedo", std::string(channels::GBufferBaseColor), 3, "linear base colour"}, kEngineOwner,
+            "engine");
+  aovs_.add({"normal", std::string(channels::GBufferNormalRoughness), 3, "world-space unit normal"},
+            kEngineOwner, "engine");
+  aovs_.add({"depth", std::string(channels::GBufferDepth), 1,
+             "distance along the view axis in metres, 0 where nothing was hit"},
+            kEngineOwner, "engine");
 }
 
 void Engine::reportUnclaimedSettings() {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 #include <stdexcept>
 
@@ -51,6 +52,10 @@ struct GraphExecutor::State {
   std::vector<PooledBuffer> buffers;
   Image black;
   MemoryReport lastMemory;
+  // Persistent allocations this executor made: freed with it if their owner lives on.
+  std::vector<std::weak_ptr<PersistentStorage>> persistent;
+  // Staging memory of this frame's uploads, kept until the GPU finished the frame.
+  std::vector<std::unique_ptr<Buffer>> staging;
 
   State(const Device& d, PipelineCache& p) : device(d), pipelines(p) {
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -73,6 +78,12 @@ struct GraphExecutor::State {
   ~State() {
     VkDevice dev = device.handle();
     vkDeviceWaitIdle(dev);
+    for (const auto& weak : persistent)
+      if (auto s = weak.lock()) {
+        s->image.reset();
+        s->buffer.reset();
+        s->state = {};
+      }
     if (queries) vkDestroyQueryPool(dev, queries, nullptr);
     vkDestroyFence(dev, fence, nullptr);
     vkDestroyCommandPool(dev, pool, nullptr);
@@ -135,7 +146,8 @@ class ExecutorPassContext final : public PassContext {
                       const GpuScene& scene, VkCommandBuffer cmd, const std::vector<Image*>& images,
                       const std::vector<Buffer*>& buffers, const std::vector<VkImageLayout>& layouts,
                       const std::vector<bool>& declared, const std::vector<bool>& unavailable,
-                      const Image& black, const std::string& pass)
+                      const Image& black, const std::string& pass,
+                      std::vector<std::unique_ptr<Buffer>>& staging)
       : device_(device),
         pipelines_(pipelines),
         frame_(frame),
@@ -147,7 +159,41 @@ class ExecutorPassContext final : public PassContext {
         declared_(declared),
         unavailable_(unavailable),
         black_(black),
-        pass_(pass) {}
+        pass_(pass),
+        staging_(staging) {}
+
+  void upload(BufferHandle dst, const void* data, uint64_t bytes, uint64_t offset) const override {
+    if (bytes == 0) return;
+    const Buffer& target = buffer(dst);
+    if (offset + bytes > target.size())
+      throw std::logic_error(fmt::format("pass '{}': upload of {} bytes at {} overruns a {}-byte buffer",
+                                         pass_, bytes, offset, target.size()));
+    const Buffer& src = stage(data, bytes);
+    VkBufferCopy copy{0, offset, bytes};
+    vkCmdCopyBuffer(cmd_, src.handle(), target.handle(), 1, &copy);
+  }
+
+  void upload(TextureHandle dst, const void* texels, uint64_t bytes) const override {
+    if (!available(dst))
+      throw std::logic_error(fmt::format("pass '{}': upload to an unavailable texture", pass_));
+    const Image& target = image(dst);
+    const VkExtent3D e = target.extent(0);
+    const uint32_t layers = target.desc().type == TextureType::Tex3D ? 1u : target.desc().layers;
+    const uint64_t expected =
+        uint64_t(e.width) * e.height * e.depth * layers * formatBytesPerTexel(target.format());
+    if (bytes != expected)
+      throw std::logic_error(
+          fmt::format("pass '{}': upload of {} bytes into a texture of {} bytes", pass_, bytes, expected));
+    const VkImageLayout l = layout(dst);
+    if (l != VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL && l != VK_IMAGE_LAYOUT_GENERAL)
+      throw std::logic_error(
+          fmt::format("pass '{}': upload needs the texture declared with Access::TransferDst", pass_));
+    const Buffer& src = stage(texels, bytes);
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {target.aspect(), 0, 0, layers};
+    copy.imageExtent = e;
+    vkCmdCopyBufferToImage(cmd_, src.handle(), target.handle(), l, 1, &copy);
+  }
 
   VkCommandBuffer cmd() const override { return cmd_; }
   const Device& device() const override { return device_; }
@@ -193,6 +239,14 @@ class ExecutorPassContext final : public PassContext {
   const std::vector<bool>& unavailable_;
   const Image& black_;
   const std::string& pass_;
+  std::vector<std::unique_ptr<Buffer>>& staging_;
+
+  const Buffer& stage(const void* data, uint64_t bytes) const {
+    staging_.push_back(
+        std::make_unique<Buffer>(device_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::Upload));
+    std::memcpy(staging_.back()->mapped(), data, bytes);
+    return *staging_.back();
+  }
 };
 
 }  // namespace
@@ -202,6 +256,7 @@ GraphExecutor::GraphExecutor(const Device& device, PipelineCache& pipelines)
 GraphExecutor::~GraphExecutor() = default;
 
 bool GraphExecutor::preparePersistent(const RenderGraph& graph, const CompiledGraph& compiled) {
+  std::erase_if(state_->persistent, [](const auto& w) { return w.expired(); });
   bool changed = false;
   for (size_t i = 0; i < compiled.resources.size(); ++i) {
     const CompiledResource& cr = compiled.resources[i];
@@ -217,6 +272,7 @@ bool GraphExecutor::preparePersistent(const RenderGraph& graph, const CompiledGr
                            persistentImageUsage(state_->device, t->desc(), cr.imageUsage), t->name());
       t->setAllocation(std::move(fresh));
       t->setState({});  // a new image starts undefined
+      state_->persistent.push_back(t->storage());
       changed = true;
     } else if (PersistentBuffer* b = r.importedBuffer) {
       auto* alloc = static_cast<PersistentBufferMemory*>(b->allocation());
@@ -228,6 +284,7 @@ bool GraphExecutor::preparePersistent(const RenderGraph& graph, const CompiledGr
       fresh->buffer = Buffer(state_->device, b->desc().size, usage, MemoryUsage::DeviceLocal, b->name());
       b->setAllocation(std::move(fresh));
       b->setState({});
+      state_->persistent.push_back(b->storage());
       changed = true;
     }
   }
@@ -340,7 +397,7 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
     for (uint32_t r : cp.unavailableOptionalReads) unavailable[r] = true;
     if (pass.record) {
       ExecutorPassContext ctx(s.device, s.pipelines, frame, scene, s.cmd, images, buffers, layouts, declared,
-                              unavailable, s.black, cp.name);
+                              unavailable, s.black, cp.name, s.staging);
       try {
         pass.record(ctx);
       } catch (const std::exception& e) {
@@ -362,6 +419,7 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
   check(vkResetFences(s.device.handle(), 1, &s.fence), "vkResetFences");
   check(vkQueueSubmit2(s.device.queue(), 1, &si, s.fence), "vkQueueSubmit2");
   check(vkWaitForFences(s.device.handle(), 1, &s.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  s.staging.clear();
 
   if (query) {
     std::vector<uint64_t> ticks(query);

@@ -11,13 +11,13 @@ bool PersistentTexture::setDesc(const TextureDesc& desc) {
   desc_ = desc;
   ++generation_;
   // The old image is gone: the next user starts from undefined contents.
-  allocation_.reset();
-  state_ = {};
+  storage_->image.reset();
+  storage_->state = {};
   return true;
 }
 
 void PersistentTexture::setAllocation(std::unique_ptr<gpu::ImageAllocation> allocation) {
-  allocation_ = std::move(allocation);
+  storage_->image = std::move(allocation);
 }
 
 PersistentBuffer::PersistentBuffer(std::string name, BufferDesc desc) : name_(std::move(name)), desc_(desc) {}
@@ -27,13 +27,13 @@ bool PersistentBuffer::setDesc(const BufferDesc& desc) {
   if (desc == desc_) return false;
   desc_ = desc;
   ++generation_;
-  allocation_.reset();
-  state_ = {};
+  storage_->buffer.reset();
+  storage_->state = {};
   return true;
 }
 
 void PersistentBuffer::setAllocation(std::unique_ptr<gpu::BufferAllocation> allocation) {
-  allocation_ = std::move(allocation);
+  storage_->buffer = std::move(allocation);
 }
 
 }  // namespace bounce

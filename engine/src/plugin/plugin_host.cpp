@@ -20,6 +20,16 @@ struct PluginHost::Loaded {
   std::unique_ptr<Plugin> plugin;
 };
 
+void EngineServices::removeOwnedBy(OwnerId owner) {
+  hooks.removeOwnedBy(owner);
+  debugViews.removeOwnedBy(owner);
+  aovs.removeOwnedBy(owner);
+  knobs.removeOwnedBy(owner);
+  console.removeOwnedBy(owner);
+  parameters.removeOwnedBy(owner);  // before the variables holding its defaults
+  cvars.removeOwnedBy(owner);
+}
+
 PluginHost::PluginHost(EngineServices& services) : services_(services) {}
 
 PluginHost::~PluginHost() { unloadAll(); }
@@ -166,12 +176,7 @@ bool PluginHost::loadResolved(const PluginDescriptor& d, std::vector<std::string
     loaded->plugin->startup(context);
   } catch (const std::exception& ex) {
     // Roll back whatever it registered before failing, then drop it.
-    OwnerId owner = loaded->owner;
-    services_.hooks.removeOwnedBy(owner);
-    services_.debugViews.removeOwnedBy(owner);
-    services_.console.removeOwnedBy(owner);
-    services_.parameters.removeOwnedBy(owner);
-    services_.cvars.removeOwnedBy(owner);
+    services_.removeOwnedBy(loaded->owner);
     return fail(fmt::format("plugin '{}' failed to start: {}", d.name, ex.what()));
   }
   failures_.erase(toLower(d.name));
@@ -200,11 +205,7 @@ bool PluginHost::unload(std::string_view name) {
   } catch (const std::exception& ex) {
     log::error("plugin '{}' failed to shut down cleanly: {}", l.descriptor.name, ex.what());
   }
-  services_.hooks.removeOwnedBy(l.owner);
-  services_.debugViews.removeOwnedBy(l.owner);
-  services_.console.removeOwnedBy(l.owner);
-  services_.parameters.removeOwnedBy(l.owner);
-  services_.cvars.removeOwnedBy(l.owner);
+  services_.removeOwnedBy(l.owner);
   loaded_.erase(it);
   return true;
 }

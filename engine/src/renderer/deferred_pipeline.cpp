@@ -48,8 +48,9 @@ constexpr uint32_t kBloomMips = 5;
 
 }  // namespace
 
-DeferredPipeline::DeferredPipeline(const RendererSettings& settings, const gpu::Device* device)
-    : settings_(settings), device_(device) {
+DeferredPipeline::DeferredPipeline(const RendererSettings& settings, const AovRegistry& aovs,
+                                   const gpu::Device* device)
+    : settings_(settings), aovs_(aovs), device_(device) {
   if (!device) return;
   // What the lighting pass samples as shadow maps when no light casts shadows (the
   // flag tells it to ignore them, but the binding must still be a depth array).
@@ -329,14 +330,8 @@ void DeferredPipeline::output(RenderGraph& g, const FrameContext& frame, const F
   if (outputs.display)
     wanted.emplace_back("display", shown.valid() ? shown : bb.texture(channels::SceneColorLdr));
   for (const std::string& aov : outputs.aovs) {
-    std::string_view channel = aov == "radiance"              ? channels::SceneColor
-                               : aov == "direct"              ? channels::DirectLighting
-                               : aov == "indirect-irradiance" ? channels::IndirectDiffuse
-                               : aov == "albedo"              ? channels::GBufferBaseColor
-                               : aov == "normal"              ? channels::GBufferNormalRoughness
-                               : aov == "depth"               ? channels::GBufferDepth
-                                                              : std::string_view{};
-    wanted.emplace_back(aov, bb.texture(channel));
+    const AovRegistry::Entry* entry = aovs_.find(aov);
+    wanted.emplace_back(aov, entry ? bb.texture(entry->desc.channel) : TextureHandle{});
   }
   for (auto& [name, handle] : wanted) {
     Readback& rb = (*readbacks)[name];
@@ -346,6 +341,13 @@ void DeferredPipeline::output(RenderGraph& g, const FrameContext& frame, const F
     if (!handle.valid()) continue;  // e.g. no GI plugin produced indirect irradiance
     const RenderGraph::Resource& res = g.resources()[handle.resource];
     rb.format = res.texture.format;
+    if (res.texture.viewScale <= 0.0f) {  // a fixed-size texture: read it at its own size
+      rb.width = res.texture.width;
+      rb.height = res.texture.height;
+    } else if (res.texture.viewScale != 1.0f) {
+      rb.width = std::max(1u, uint32_t(std::ceil(float(frame.view.width) * res.texture.viewScale)));
+      rb.height = std::max(1u, uint32_t(std::ceil(float(frame.view.height) * res.texture.viewScale)));
+    }
     const uint64_t bytes = uint64_t(rb.width) * rb.height * formatBytesPerTexel(rb.format);
     if (!rb.buffer || rb.buffer->size() < bytes)
       rb.buffer = std::make_unique<gpu::Buffer>(*device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,

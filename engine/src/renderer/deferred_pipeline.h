@@ -4,6 +4,7 @@
 // between the extension points.
 
 #include "bounce/engine.h"
+#include "bounce/frame/outputs.h"
 #include "bounce/gpu/buffer.h"
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/image.h"
@@ -28,17 +29,14 @@ using Readbacks = std::map<std::string, Readback>;
 
 /// What a frame must produce besides the displayed image.
 struct FrameOutputs {
-  std::vector<std::string> aovs;  ///< AOV names (see aovNames())
-  bool display = false;           ///< read back the tone-mapped image as "display"
+  std::vector<std::string> aovs;  ///< names registered in the AovRegistry
+  bool display = false;           ///< read back the displayed image as "display"
 };
-
-/// radiance, direct, indirect-irradiance, albedo, normal, depth.
-const std::vector<std::string>& aovNames();
 
 class DeferredPipeline {
  public:
   /// Without a device the stages only declare passes (graph reports, tests).
-  DeferredPipeline(const RendererSettings& settings, const gpu::Device* device);
+  DeferredPipeline(const RendererSettings& settings, const AovRegistry& aovs, const gpu::Device* device);
   ~DeferredPipeline();
 
   /// The engine stages for one frame. Read-back passes copy into `readbacks` (which
@@ -53,6 +51,7 @@ class DeferredPipeline {
               Readbacks* readbacks) const;
 
   const RendererSettings& settings_;
+  const AovRegistry& aovs_;
   const gpu::Device* device_;
   std::unique_ptr<gpu::Image> noShadows_;
 };

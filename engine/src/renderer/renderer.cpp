@@ -27,7 +27,7 @@ Renderer::Renderer(Engine& engine, const gpu::Device& device, RendererOptions op
   pipelines_ = std::make_unique<gpu::PipelineCache>(device, *compiler_);
   scene_ = std::make_unique<gpu::GpuScene>(device);
   executor_ = std::make_unique<gpu::GraphExecutor>(device, *pipelines_);
-  pipeline_ = std::make_unique<DeferredPipeline>(engine.rendererSettings(), &device);
+  pipeline_ = std::make_unique<DeferredPipeline>(engine.rendererSettings(), engine.aovs(), &device);
 }
 
 Renderer::~Renderer() { vkDeviceWaitIdle(device_.handle()); }
@@ -54,8 +54,8 @@ RenderedFrame Renderer::render(const FrameView& view, const FrameOutputs& output
 }
 
 ImageBuffer Renderer::convert(const std::string& name, const Readback& rb, const FrameView& view) const {
-  const bool depth = name == "depth";
-  const uint32_t channels = depth ? 1 : name == "display" ? 4 : 3;
+  const AovRegistry::Entry* entry = engine_.aovs().find(name);
+  const uint32_t channels = name == "display" ? 4 : entry ? entry->desc.components : 3;
   ImageBuffer img(rb.width, rb.height, channels, 0.0f);
   // A channel nobody produced this frame (no GI plugin, no indirect light) is zero.
   if (!rb.produced || !rb.buffer) return img;
@@ -71,6 +71,16 @@ ImageBuffer Renderer::convert(const std::string& name, const Readback& rb, const
       case VK_FORMAT_R16G16B16A16_SFLOAT: {
         const auto* h = reinterpret_cast<const uint16_t*>(data) + i * 4;
         for (uint32_t c = 0; c < channels; ++c) px[c] = glm::unpackHalf1x16(h[c]);
+        break;
+      }
+      case VK_FORMAT_R32G32B32A32_SFLOAT: {
+        const auto* f = reinterpret_cast<const float*>(data) + i * 4;
+        for (uint32_t c = 0; c < channels; ++c) px[c] = f[c];
+        break;
+      }
+      case VK_FORMAT_R32_SFLOAT: {
+        const float v = reinterpret_cast<const float*>(data)[i];
+        for (uint32_t c = 0; c < channels; ++c) px[c] = v;
         break;
       }
       case VK_FORMAT_R8G8B8A8_SRGB:

@@ -50,6 +50,14 @@ class PassContext {
   virtual bool available(TextureHandle handle) const = 0;
   virtual bool available(BufferHandle handle) const = 0;
 
+  /// Copies CPU data into a buffer the pass declared with Access::TransferDst. The
+  /// staging memory lives until the GPU has finished the frame.
+  virtual void upload(BufferHandle destination, const void* data, uint64_t bytes,
+                      uint64_t offset = 0) const = 0;
+  /// Copies tightly packed texels into mip 0 (every layer, or the whole volume) of a
+  /// texture the pass declared with Access::TransferDst.
+  virtual void upload(TextureHandle destination, const void* texels, uint64_t bytes) const = 0;
+
   // --- recording helpers --------------------------------------------------------------
   /// Binds the pipeline and pushes its descriptors.
   void bind(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings) const;

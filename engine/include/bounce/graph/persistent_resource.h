@@ -21,6 +21,15 @@ struct BufferAllocation {
 };
 }  // namespace gpu
 
+/// Where a persistent resource's device memory and synchronization state live. Shared
+/// so that the executor that created the allocation can free it when it (and its
+/// device) goes away first, whatever order an application destroys things in.
+struct PersistentStorage {
+  std::unique_ptr<gpu::ImageAllocation> image;
+  std::unique_ptr<gpu::BufferAllocation> buffer;
+  ResourceState state;
+};
+
 class PersistentTexture {
  public:
   PersistentTexture(std::string name, TextureDesc desc);
@@ -37,19 +46,19 @@ class PersistentTexture {
   uint64_t generation() const { return generation_; }
 
   /// Synchronization state after the last executed use (maintained by the graph).
-  const ResourceState& state() const { return state_; }
-  void setState(const ResourceState& state) { state_ = state; }
+  const ResourceState& state() const { return storage_->state; }
+  void setState(const ResourceState& state) { storage_->state = state; }
 
   /// The device's allocation, created lazily by the graph executor.
-  gpu::ImageAllocation* allocation() const { return allocation_.get(); }
+  gpu::ImageAllocation* allocation() const { return storage_->image.get(); }
   void setAllocation(std::unique_ptr<gpu::ImageAllocation> allocation);
+  std::weak_ptr<PersistentStorage> storage() const { return storage_; }
 
  private:
   std::string name_;
   TextureDesc desc_;
   uint64_t generation_ = 1;
-  ResourceState state_;
-  std::unique_ptr<gpu::ImageAllocation> allocation_;
+  std::shared_ptr<PersistentStorage> storage_ = std::make_shared<PersistentStorage>();
 };
 
 class PersistentBuffer {
@@ -63,17 +72,17 @@ class PersistentBuffer {
   const BufferDesc& desc() const { return desc_; }
   bool setDesc(const BufferDesc& desc);
   uint64_t generation() const { return generation_; }
-  const ResourceState& state() const { return state_; }
-  void setState(const ResourceState& state) { state_ = state; }
-  gpu::BufferAllocation* allocation() const { return allocation_.get(); }
+  const ResourceState& state() const { return storage_->state; }
+  void setState(const ResourceState& state) { storage_->state = state; }
+  gpu::BufferAllocation* allocation() const { return storage_->buffer.get(); }
   void setAllocation(std::unique_ptr<gpu::BufferAllocation> allocation);
+  std::weak_ptr<PersistentStorage> storage() const { return storage_; }
 
  private:
   std::string name_;
   BufferDesc desc_;
   uint64_t generation_ = 1;
-  ResourceState state_;
-  std::unique_ptr<gpu::BufferAllocation> allocation_;
+  std::shared_ptr<PersistentStorage> storage_ = std::make_shared<PersistentStorage>();
 };
 
 }  // namespace bounce

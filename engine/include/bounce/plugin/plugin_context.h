@@ -5,7 +5,9 @@
 #include "bounce/config/config_stack.h"
 #include "bounce/config/console.h"
 #include "bounce/config/cvar_registry.h"
+#include "bounce/frame/outputs.h"
 #include "bounce/frame/pass_hooks.h"
+#include "bounce/frame/quality_knobs.h"
 #include "bounce/plugin/plugin_descriptor.h"
 #include "bounce/scene/object_parameters.h"
 
@@ -21,6 +23,11 @@ struct EngineServices {
   ObjectParameterRegistry& parameters;
   PassHookRegistry& hooks;
   DebugViewRegistry& debugViews;
+  AovRegistry& aovs;
+  QualityKnobRegistry& knobs;
+
+  /// Removes everything `owner` registered, from every registry.
+  void removeOwnedBy(OwnerId owner);
 };
 
 class PluginContext {
@@ -61,6 +68,12 @@ class PluginContext {
   }
   void addDebugView(DebugViewDesc desc) {
     services_.debugViews.add(std::move(desc), owner_, descriptor_.name);
+  }
+  /// An output applications can write by name (bounce-render --aov NAME=FILE.exr).
+  void addAov(AovDesc desc) { services_.aovs.add(std::move(desc), owner_, descriptor_.name); }
+  /// A console variable and values the accuracy benchmark sweeps for this technique.
+  void addQualityKnob(QualityKnobDesc desc) {
+    services_.knobs.add(std::move(desc), owner_, descriptor_.name);
   }
 
   /// Read access to engine state.
