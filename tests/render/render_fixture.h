@@ -63,8 +63,10 @@ class RenderFixture : public ::testing::Test {
     }
   }
 
-  std::unique_ptr<Engine> engine;
+  // Destroyed in reverse: the renderer, then the engine (plugins release GPU objects),
+  // then the device.
   std::unique_ptr<gpu::Device> device;
+  std::unique_ptr<Engine> engine;
   std::unique_ptr<Renderer> renderer;
 
  private:

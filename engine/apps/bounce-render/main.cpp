@@ -77,6 +77,9 @@ int main(int argc, char** argv) {
     return fail(kBadInput, e.what());
   }
 
+  // Declared before the engine so it is destroyed after it: plugins release their GPU
+  // objects while the device still exists.
+  std::unique_ptr<bounce::gpu::Device> device;
   bounce::EngineOptions options;
   options.iniFiles = inis;
   options.sets = sets;
@@ -111,7 +114,7 @@ int main(int argc, char** argv) {
   const bounce::Camera camera = scene.cameras().empty() ? bounce::Camera{} : scene.cameras().front();
 
   std::string error;
-  auto device = bounce::gpu::Device::create({.preferredDevice = deviceName}, &error);
+  device = bounce::gpu::Device::create({.preferredDevice = deviceName}, &error);
   if (!device) return fail(kDeviceFailure, error);
   const uint32_t maxSize = device->properties().limits.maxImageDimension2D;
   if (width > maxSize || height > maxSize)
@@ -132,7 +135,7 @@ int main(int argc, char** argv) {
       bounce::RenderedFrame frame = renderer.render(view, outputs, f);
       if (!frame.gpu.ok()) return fail(kBadInput, frame.gpu.errors.front());
       // The first frame compiles pipelines and fills caches: it is not timed.
-      if (f > 0 || frames == 1) stats.addFrame(frame.gpu);
+      if (f > 0 || frames == 1) stats.addFrame(frame.gpu, frame.cpu);
       if (f + 1 == frames) {
         for (const std::string& w : frame.warnings) bounce::log::warn("{}", w);
         stats.setGraph(frame.graph, renderer.executor().memory());

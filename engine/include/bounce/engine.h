@@ -55,13 +55,16 @@ class Engine {
   Engine& operator=(const Engine&) = delete;
 
   CVarRegistry& cvars() { return cvars_; }
+  const CVarRegistry& cvars() const { return cvars_; }
   Console& console() { return console_; }
   ConfigStack& config() { return config_; }
   ObjectParameterRegistry& parameters() { return parameters_; }
   PassHookRegistry& hooks() { return hooks_; }
   DebugViewRegistry& debugViews() { return debugViews_; }
   AovRegistry& aovs() { return aovs_; }
+  const AovRegistry& aovs() const { return aovs_; }
   QualityKnobRegistry& qualityKnobs() { return knobs_; }
+  const QualityKnobRegistry& qualityKnobs() const { return knobs_; }
   PluginHost& plugins() { return *plugins_; }
   EngineServices& services() { return services_; }
 
@@ -84,8 +87,18 @@ class Engine {
   /// The selected GI technique if its plugin is loaded, else "none".
   std::string technique() const;
 
+  /// CPU time a pass hook's setup took (work a technique does on the CPU, such as the
+  /// reference path tracer's, shows up here rather than in GPU timings).
+  struct HookTiming {
+    std::string hook;
+    std::string origin;
+    double milliseconds = 0.0;
+  };
+
   /// Builds one frame's graph: engine stages and plugin hooks in extension-point order.
-  void buildFrame(RenderGraph& graph, const FrameContext& frame, const EngineStages& stages);
+  /// Returns the CPU time of every hook that ran.
+  std::vector<HookTiming> buildFrame(RenderGraph& graph, const FrameContext& frame,
+                                     const EngineStages& stages);
 
   /// Engine variables plugins and the renderer read.
   CVarRef<std::string> techniqueCVar() const { return technique_; }

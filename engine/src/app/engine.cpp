@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <chrono>
 #include <cstdlib>
 #include <system_error>
 
@@ -266,7 +267,9 @@ std::string Engine::technique() const {
   return "none";
 }
 
-void Engine::buildFrame(RenderGraph& graph, const FrameContext& frame, const EngineStages& stages) {
+std::vector<Engine::HookTiming> Engine::buildFrame(RenderGraph& graph, const FrameContext& frame,
+                                                   const EngineStages& stages) {
+  std::vector<HookTiming> timings;
   graph.setViewExtent(frame.view.width, frame.view.height);
   auto engineStage = [&](const std::function<void(RenderGraph&, const FrameContext&)>& stage) {
     graph.setOrigin(std::nullopt, "engine");
@@ -275,12 +278,15 @@ void Engine::buildFrame(RenderGraph& graph, const FrameContext& frame, const Eng
   auto hooksAt = [&](ExtensionPoint point) {
     for (const PassHookRegistry::Hook* hook : hooks_.at(point, frame.technique)) {
       graph.setOrigin(point, hook->origin);
+      const auto start = std::chrono::steady_clock::now();
       try {
         hook->desc.setup(graph, frame);
       } catch (const std::exception& e) {
         // A failing hook loses its passes for this frame; the frame goes on without them.
         log::error("pass hook '{}' ({}) failed: {}", hook->desc.name, hook->origin, e.what());
       }
+      const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+      timings.push_back({hook->desc.name, hook->origin, elapsed.count()});
     }
   };
   hooksAt(ExtensionPoint::FrameBegin);
@@ -294,6 +300,7 @@ void Engine::buildFrame(RenderGraph& graph, const FrameContext& frame, const Eng
   engineStage(stages.postProcess);
   hooksAt(ExtensionPoint::DebugView);
   engineStage(stages.output);
+  return timings;
 }
 
 }  // namespace bounce

@@ -23,7 +23,14 @@ double RenderStats::passMedian(const std::string& pass) const {
   return it == passMs_.end() ? 0.0 : median(it->second);
 }
 
-void RenderStats::addFrame(const gpu::FrameResult& frame) {
+void RenderStats::addFrame(const gpu::FrameResult& frame, const std::vector<Engine::HookTiming>& cpu) {
+  double total = 0.0;
+  for (const Engine::HookTiming& h : cpu) {
+    if (!cpuHookMs_.count(h.hook)) cpuOrder_.push_back(h.hook);
+    cpuHookMs_[h.hook].push_back(h.milliseconds);
+    total += h.milliseconds;
+  }
+  cpuMs_.push_back(total);
   for (const gpu::PassTiming& p : frame.passes) {
     if (!passMs_.count(p.name)) order_.push_back(p.name);
     passMs_[p.name].push_back(p.milliseconds);
@@ -47,6 +54,11 @@ std::string RenderStats::table() const {
                                 height_, technique_, frameMs_.size());
   for (const std::string& n : order_) out += fmt::format("  {:<{}}  {:>9.3f}\n", n, w, median(passMs_.at(n)));
   out += fmt::format("  {:<{}}  {:>9.3f}\n", "frame", w, median(frameMs_));
+  // CPU work techniques do while setting up their passes (e.g. path tracing); hooks
+  // that only declare passes take microseconds and are not listed.
+  for (const std::string& n : cpuOrder_)
+    if (median(cpuHookMs_.at(n)) >= 0.05)
+      out += fmt::format("  cpu: {} {:.3f} ms\n", n, median(cpuHookMs_.at(n)));
   for (const auto& [name, reason] : culled_) out += fmt::format("  culled: {} ({})\n", name, reason);
   return out;
 }
@@ -67,6 +79,10 @@ bool RenderStats::writeJson(const std::string& path, std::string* error) const {
     j["passes"].push_back(
         {{"name", n}, {"medianMs", median(passMs_.at(n))}, {"samplesMs", passMs_.at(n)}, {"reason", reason}});
   }
+  j["cpuMs"] = median(cpuMs_);
+  j["cpuHooks"] = nlohmann::json::array();
+  for (const std::string& n : cpuOrder_)
+    j["cpuHooks"].push_back({{"name", n}, {"medianMs", median(cpuHookMs_.at(n))}});
   j["culled"] = nlohmann::json::array();
   for (const auto& [name, reason] : culled_) j["culled"].push_back({{"name", name}, {"reason", reason}});
   j["resources"] = nlohmann::json::array();

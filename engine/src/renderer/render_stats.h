@@ -2,6 +2,7 @@
 // Per-pass GPU timings over several frames, with the medians, the culled passes and
 // memory, printed as a table and written as JSON (bounce-render --stats).
 
+#include "bounce/engine.h"
 #include "bounce/graph/compiled_graph.h"
 #include "gpu/graph_executor.h"
 
@@ -14,7 +15,7 @@ namespace bounce {
 class RenderStats {
  public:
   RenderStats(std::string device, uint32_t width, uint32_t height, std::string technique);
-  void addFrame(const gpu::FrameResult& frame);
+  void addFrame(const gpu::FrameResult& frame, const std::vector<Engine::HookTiming>& cpu = {});
   void setGraph(const CompiledGraph& graph, const gpu::MemoryReport& memory);
 
   std::string table() const;
@@ -22,6 +23,8 @@ class RenderStats {
   const std::vector<std::string>& passes() const { return order_; }
   double passMedian(const std::string& pass) const;
   double frameMedian() const { return median(frameMs_); }
+  /// Median CPU milliseconds of the pass hooks' setup per frame, in total.
+  double cpuMedian() const { return median(cpuMs_); }
   bool writeJson(const std::string& path, std::string* error) const;
 
   static double median(std::vector<double> values);
@@ -32,6 +35,9 @@ class RenderStats {
   std::vector<std::string> order_;  // passes in execution order
   std::map<std::string, std::vector<double>> passMs_;
   std::vector<double> frameMs_;
+  std::vector<double> cpuMs_;  // all hooks, per frame
+  std::vector<std::string> cpuOrder_;
+  std::map<std::string, std::vector<double>> cpuHookMs_;
   std::vector<std::pair<std::string, std::string>> culled_;
   std::vector<std::pair<std::string, std::string>> runReasons_;
   gpu::MemoryReport memory_;

@@ -40,7 +40,7 @@ RenderedFrame Renderer::render(const FrameView& view, const FrameOutputs& output
   PostProcessSettings pp = PostProcessSettings::blend(*scene, engine_.cvars(), view.position, &out.warnings);
   FrameContext frame{*scene, engine_.cvars(), view, pp, frameIndex, engine_.technique()};
   RenderGraph graph;
-  engine_.buildFrame(graph, frame, pipeline_->stages(outputs, &readbacks_));
+  out.cpu = engine_.buildFrame(graph, frame, pipeline_->stages(outputs, &readbacks_));
   out.gpu = gpu::runFrame(*executor_, graph, frame, *scene_, &out.graph);
 
   auto want = [&](const std::string& name) {

@@ -26,7 +26,8 @@ struct RendererOptions {
 };
 
 struct RenderedFrame {
-  gpu::FrameResult gpu;  ///< per-pass GPU milliseconds, recording errors
+  gpu::FrameResult gpu;                 ///< per-pass GPU milliseconds, recording errors
+  std::vector<Engine::HookTiming> cpu;  ///< CPU milliseconds of each pass hook's setup
   CompiledGraph graph;
   /// "display" (display-encoded RGBA, 0..1) and the requested AOVs (linear floats:
   /// RGB, or one channel for depth in metres along the view axis, 0 where nothing was hit).

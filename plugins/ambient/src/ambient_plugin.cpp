@@ -42,6 +42,10 @@ class AmbientPlugin final : public Plugin {
                                         .help = "Whether the constant ambient term lights this material.",
                                         .defaultValue = true,
                                         .category = "Ambient"});
+    // Its only knob: the constant is a guess at the scene's average indirect light, so the
+    // benchmark shows which guess is least wrong for a scene.
+    ctx.addQualityKnob(
+        {.cvar = "r.Ambient.Intensity", .values = {"0.1", "0.25", "0.5", "1"}, .label = "intensity"});
     ctx.addDebugView({.name = "Ambient: irradiance",
                       .description = "The ambient irradiance channel alone.",
                       .activate = "r.Ambient.DebugMode 1",

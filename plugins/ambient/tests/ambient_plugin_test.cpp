@@ -156,7 +156,8 @@ TEST(AmbientPlugin, UnloadingRemovesEverythingItRegistered) {
   EXPECT_EQ(engine->parameters().find(ObjectKind::Material, "ReceivesAmbient"), nullptr);
   EXPECT_EQ(engine->debugViews().find("Ambient: irradiance"), nullptr);
   EXPECT_FALSE(engine->console().hasCommand("ambient.Status"));
-  EXPECT_TRUE(engine->hooks().all().empty());
+  for (const auto& hook : engine->hooks().all()) EXPECT_NE(hook.origin, "Ambient") << hook.desc.name;
+  EXPECT_TRUE(engine->qualityKnobs().of("Ambient").empty());
   EXPECT_EQ(engine->technique(), "none");
 }
 

@@ -44,12 +44,8 @@ void alphaMaskFilter(const RTCFilterFunctionNArguments* args) {
   for (unsigned int i = 0; i < args->N; ++i) {
     if (args->valid[i] == 0) continue;
     const uint32_t primID = RTCHitN_primID(args->hit, args->N, i);
-    const glm::vec2 uv =
-        record->uvAt(primID, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
-    float alpha = record->alphaFactor;
-    // Alpha is linear in sRGB textures too, so the linear read gives the right value.
-    if (record->alphaTexture) alpha *= sampleBilinear(*record->alphaTexture, uv, ColorSpace::Linear).a;
-    if (alpha < record->alphaCutoff) args->valid[i] = 0;
+    if (record->cutOut(primID, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
+      args->valid[i] = 0;
   }
 }
 
@@ -59,6 +55,14 @@ glm::vec2 GeometryRecord::uvAt(uint32_t primID, float u, float v) const {
   if (uvs.empty()) return glm::vec2(0.0f);
   const glm::uvec3& tri = triangles[primID];
   return (1.0f - u - v) * uvs[tri.x] + u * uvs[tri.y] + v * uvs[tri.z];
+}
+
+bool GeometryRecord::cutOut(uint32_t primID, float u, float v) const {
+  if (alphaCutoff < 0.0f) return false;
+  float alpha = alphaFactor;
+  // Alpha is linear in sRGB textures too, so the linear read gives the right value.
+  if (alphaTexture) alpha *= sampleBilinear(*alphaTexture, uvAt(primID, u, v), ColorSpace::Linear).a;
+  return alpha < alphaCutoff;  // as gbuffer.frag's discard
 }
 
 void EmbreeScene::DeviceDeleter::operator()(void* device) const {
@@ -190,13 +194,14 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<Texture>& texture
 
 EmbreeScene::~EmbreeScene() = default;
 
-bool EmbreeScene::intersect(const glm::vec3& org, const glm::vec3& dir, float tFar, RayHit& hit) const {
+bool EmbreeScene::intersect(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar,
+                            RayHit& hit) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
   rh.ray.org_x = org.x, rh.ray.org_y = org.y, rh.ray.org_z = org.z;
   rh.ray.dir_x = dir.x, rh.ray.dir_y = dir.y, rh.ray.dir_z = dir.z;
-  rh.ray.tnear = 0.0f;
+  rh.ray.tnear = tNear;
   rh.ray.tfar = tFar;
   rh.ray.mask = 0xFFFFFFFFu;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -211,13 +216,13 @@ bool EmbreeScene::intersect(const glm::vec3& org, const glm::vec3& dir, float tF
   return true;
 }
 
-bool EmbreeScene::occluded(const glm::vec3& org, const glm::vec3& dir, float tFar) const {
+bool EmbreeScene::occluded(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray{};
   ray.org_x = org.x, ray.org_y = org.y, ray.org_z = org.z;
   ray.dir_x = dir.x, ray.dir_y = dir.y, ray.dir_z = dir.z;
-  ray.tnear = 0.0f;
+  ray.tnear = tNear;
   ray.tfar = tFar;
   ray.mask = 0xFFFFFFFFu;
   rtcOccluded1(static_cast<RTCScene>(scene_.get()), &context, &ray);

@@ -33,6 +33,8 @@ struct GeometryRecord {
 
   /// Texture coordinates at barycentrics (u, v) of a triangle; 0 without UVs.
   glm::vec2 uvAt(uint32_t primID, float u, float v) const;
+  /// Whether the alpha mask cuts this point out (rays pass through it, it emits nothing).
+  bool cutOut(uint32_t primID, float u, float v) const;
 };
 
 struct RayHit {
@@ -51,10 +53,10 @@ class EmbreeScene {
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  /// Closest hit along org + t·dir for t in [0, tFar]; `dir` need not be unit length.
-  bool intersect(const glm::vec3& org, const glm::vec3& dir, float tFar, RayHit& hit) const;
-  /// Whether anything lies along org + t·dir for t in [0, tFar].
-  bool occluded(const glm::vec3& org, const glm::vec3& dir, float tFar) const;
+  /// Closest hit along org + t·dir for t in [tNear, tFar]; `dir` need not be unit length.
+  bool intersect(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar, RayHit& hit) const;
+  /// Whether anything lies along org + t·dir for t in [tNear, tFar].
+  bool occluded(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar) const;
 
   const std::vector<GeometryRecord>& geometries() const { return geometries_; }
   /// Diagonal of the world bounds of all kept triangles (0 for an empty scene).

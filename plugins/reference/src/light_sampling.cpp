@@ -20,7 +20,8 @@ PunctualLight::PunctualLight(const Light& l)
       position(l.position),
       range(std::max(l.range, 0.0f)),
       direction(safeDirection(l.direction)),
-      intensity(l.radiometricIntensity()) {
+      intensity(l.radiometricIntensity()),
+      castShadows(l.castShadows) {
   const float inner = std::clamp(l.innerConeAngle, 0.0f, 1.5707963f);
   const float outer = std::clamp(std::max(l.outerConeAngle, inner), 0.0f, 1.5707963f);
   cosInner = std::cos(inner);
@@ -67,8 +68,8 @@ EmitterDistribution::EmitterDistribution(const EmbreeScene& embree, const Materi
     if (!m.emissive() || !(lum > 0.0f) || !std::isfinite(lum)) continue;
     for (uint32_t t = 0; t < g.triangles.size(); ++t) {
       const glm::uvec3& tri = g.triangles[t];
-      const double area = 0.5 * glm::length(glm::dcross(glm::dvec3(g.positions[tri.y] - g.positions[tri.x]),
-                                                        glm::dvec3(g.positions[tri.z] - g.positions[tri.x])));
+      const double area = 0.5 * glm::length(glm::cross(glm::dvec3(g.positions[tri.y] - g.positions[tri.x]),
+                                                       glm::dvec3(g.positions[tri.z] - g.positions[tri.x])));
       // Zero-area triangles can neither be sampled nor hit: leaving them out costs nothing.
       if (!(area > 0.0) || !std::isfinite(area)) continue;
       total += area * lum;
@@ -112,7 +113,9 @@ bool EmitterDistribution::sample(float uSelect, const glm::vec2& u, EmitterSampl
   const float b0 = 1.0f - b1 - b2;
   out.position = b0 * p0 + b1 * p1 + b2 * p2;
   out.faceNormal = safeNormalize(glm::cross(p1 - p0, p2 - p0), glm::vec3(0.0f, 1.0f, 0.0f));
-  out.radiance = materials_.emission(g, e.primID, b1, b2);
+  // A cut-out point of an alpha-masked emitter emits nothing (rays pass through it);
+  // returning zero there keeps the estimate unbiased.
+  out.radiance = g.cutOut(e.primID, b1, b2) ? glm::vec3(0.0f) : materials_.emission(g, e.primID, b1, b2);
   out.doubleSided = materials_.material(g.material).doubleSided;
   out.pdfArea = pdfArea(g);
   out.offset = surfaceOffset(p0, p1, p2);

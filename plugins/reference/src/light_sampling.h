@@ -25,6 +25,8 @@ struct PunctualLight {
   glm::vec3 direction;  ///< the way light travels
   glm::vec3 intensity;  ///< W/m² (directional) or W/sr (point, spot)
   float cosInner, cosOuter;
+  /// Light::castShadows: false skips shadow rays, as the rasterizer then has no shadow map.
+  bool castShadows;
 };
 
 struct Incidence {

@@ -18,6 +18,14 @@
 // primary hit: 0 = direct light only (including light from emissive surfaces),
 // 1 = one indirect bounce (what VXGI computes), -1 = unlimited (Russian roulette that
 // keeps the estimate unbiased).
+//
+// Conventions where the rasterizer leaves a choice (see the sources for the reasons):
+// emission leaves front faces only, both faces of double-sided materials; a visible
+// back face of a single-sided material (which the rasterizer culls; closed scenes never
+// show one) is shaded with its geometric normal turned toward the ray; textures are
+// read bilinearly from mip 0 with repeat wrapping, through TEXCOORD_0 as the G-buffer
+// does; glTF alpha masks cut geometry out for every ray, shadow rays included; lights
+// with castShadows off are never occluded; the background is black.
 
 #include "bounce/frame/frame_context.h"
 #include "bounce/image/image_buffer.h"
@@ -54,12 +62,17 @@ class Accumulation {
   ImageBuffer indirectIrradiance() const;
   /// Standard error of the radiance mean per pixel and channel: sqrt(var / n).
   ImageBuffer radianceStandardError() const;
+  /// Samples dropped because they were NaN or infinite (each pixel's means are over its
+  /// finite samples only).
+  uint64_t droppedSamples() const { return dropped_; }
 
  private:
   friend class PathTracer;
   uint32_t width_, height_;
   uint32_t samples_ = 0;
+  uint64_t dropped_ = 0;
   std::vector<glm::dvec3> radiance_, radianceSquared_, direct_, indirect_;
+  std::vector<uint32_t> counts_;  ///< finite samples per pixel
 };
 
 class PathTracer {

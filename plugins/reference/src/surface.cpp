@@ -31,6 +31,8 @@ float surfaceOffset(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p
   return std::max(kRelativeOffset * std::max({maxAbs(p0), maxAbs(p1), maxAbs(p2)}), kMinOffset);
 }
 
+float pointOffset(const glm::vec3& p) { return std::max(kRelativeOffset * maxAbs(p), kMinOffset); }
+
 MaterialTable::MaterialTable(const Scene& scene)
     : materials_(scene.materials()), textures_(scene.textures()) {}
 

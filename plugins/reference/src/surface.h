@@ -28,7 +28,11 @@ struct SurfacePoint {
 };
 
 /// Pushes a ray origin off its surface to the side `direction` leaves by, so the new ray
-/// cannot hit the triangle it starts on.
+/// cannot hit the triangle it starts on. Rays leaving a surface also start at
+/// t = offset: at the seam of two overlapping solids (a ceiling slab running into a wall
+/// slab) the hit point can lie a rounding error inside the other solid, and without it
+/// that solid's face at t ≈ 0 would shadow the whole seam. Only geometry thinner than
+/// the offset (≈ 1.5e-5 of the coordinates) could let light through.
 inline glm::vec3 offsetRayOrigin(const SurfacePoint& s, const glm::vec3& direction) {
   return s.position +
          (glm::dot(direction, s.geometricNormal) >= 0.0f ? s.offset : -s.offset) * s.geometricNormal;
@@ -60,5 +64,7 @@ class MaterialTable {
 /// because the hit point interpolated from them is only accurate to a few float ulps of
 /// that magnitude (see surface.cpp).
 float surfaceOffset(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2);
+/// The same offset for a single point (a punctual light's position).
+float pointOffset(const glm::vec3& p);
 
 }  // namespace bounce::reference
