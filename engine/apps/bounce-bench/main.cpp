@@ -19,6 +19,8 @@
 #include "reference_cache.h"
 
 #include <fmt/format.h>
+#include "parse_arguments.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -28,7 +30,7 @@ namespace fs = std::filesystem;
 
 int main(int argc, char** argv) {
   CLI::App app{"bounce-bench: accuracy against a path-traced reference versus time, per quality knob"};
-  app.option_defaults()->ignore_case();
+  bounce::app::acceptUnrealSpellings(app);
   std::string scene = "content/cornell_box.gltf", outDir, deviceName, cacheDir;
   uint32_t width = 256, height = 256, frames = 4, referenceSamples = 4096;
   int32_t referenceBounces = -1;
@@ -49,17 +51,7 @@ int main(int argc, char** argv) {
   app.add_option("--set", sets, "Console variable NAME=VALUE for every run (repeatable)");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
   app.add_option("--cache", cacheDir, "Reference cache folder (default ~/.cache/bounce/references)");
-  try {
-    std::vector<std::string> args = bounce::normalizeCommandLine(argc, argv);
-    std::reverse(args.begin() + 1, args.end());
-    args.erase(args.begin());
-    app.parse(args);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "bounce-bench: {}\n", e.what());
-    return 2;
-  }
+  if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-bench")) return *status;
   auto fail = [](int status, const std::string& message) {
     fmt::print(stderr, "bounce-bench: {}\n", message);
     return status;

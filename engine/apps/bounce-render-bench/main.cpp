@@ -11,6 +11,8 @@
 #include "renderer/render_stats.h"
 #include "renderer/renderer.h"
 
+#include "parse_arguments.h"
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -19,7 +21,7 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"bounce-render-bench: per-pass GPU milliseconds at several sizes"};
-  app.option_defaults()->ignore_case();
+  bounce::app::acceptUnrealSpellings(app);
   std::string scenePath = "content/cornell_box.gltf", technique = "Ambient", deviceName;
   std::vector<uint32_t> sizes{256, 512};
   uint32_t frames = 10;
@@ -30,17 +32,7 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "Frames per size (the first is not timed)")->check(CLI::Range(2u, 10000u));
   app.add_option("--set", sets, "Console variable NAME=VALUE (repeatable)");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
-  try {
-    std::vector<std::string> args = bounce::normalizeCommandLine(argc, argv);
-    std::reverse(args.begin() + 1, args.end());
-    args.erase(args.begin());
-    app.parse(args);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "bounce-render-bench: {}\n", e.what());
-    return 2;
-  }
+  if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-render-bench")) return *status;
 
   bounce::EngineOptions options;
   options.userIni = std::filesystem::path();  // reproducible: no per-user settings

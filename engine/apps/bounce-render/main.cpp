@@ -20,6 +20,8 @@
 #include "renderer/renderer.h"
 
 #include <fmt/format.h>
+#include "parse_arguments.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -45,7 +47,7 @@ struct AovRequest {
 
 int main(int argc, char** argv) {
   CLI::App app{"bounce-render: render a glTF scene with a GI technique"};
-  app.option_defaults()->ignore_case();  // Unreal options are case-insensitive (-SET, -Ini)
+  bounce::app::acceptUnrealSpellings(app);
   std::string scenePath, technique, outPath, statsPath, graphJson, deviceName;
   uint32_t width = 512, height = 512, frames = 1;
   bool printGraph = false;
@@ -66,16 +68,7 @@ int main(int argc, char** argv) {
   app.add_option("--disable-plugin", disable, "Disable a plugin (repeatable)");
   app.add_flag("--print-graph", printGraph, "Print the compiled render graph of the last frame");
   app.add_option("--graph-json", graphJson, "Write the compiled graph report as JSON");
-  try {
-    std::vector<std::string> args = bounce::normalizeCommandLine(argc, argv);
-    std::reverse(args.begin() + 1, args.end());  // CLI11 takes them last-first
-    args.erase(args.begin());
-    app.parse(args);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    return fail(kBadInput, e.what());
-  }
+  if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-render")) return *status;
 
   // Declared before the engine so it is destroyed after it: plugins release their GPU
   // objects while the device still exists.
