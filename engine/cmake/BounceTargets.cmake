@@ -27,13 +27,18 @@ endfunction()
 # A GoogleTest executable registered with ctest. Tests run from the build folder and
 # find the repository through BOUNCE_SOURCE_DIR.
 function(bounce_add_test target)
-  cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+  # SERIAL: tests that start their own X server or window run one at a time.
+  cmake_parse_arguments(ARG "SERIAL" "" "SOURCES;LIBRARIES" ${ARGN})
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE bounce_engine GTest::gtest GTest::gmock GTest::gtest_main ${ARG_LIBRARIES})
   target_compile_options(${target} PRIVATE ${BOUNCE_WARNINGS})
   target_compile_definitions(${target} PRIVATE
     BOUNCE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     BOUNCE_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  set(serial FALSE)
+  if(ARG_SERIAL)
+    set(serial TRUE)
+  endif()
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60
-    PROPERTIES ENVIRONMENT "BOUNCE_ROOT=${PROJECT_SOURCE_DIR}")
+    PROPERTIES ENVIRONMENT "BOUNCE_ROOT=${PROJECT_SOURCE_DIR}" RUN_SERIAL ${serial})
 endfunction()

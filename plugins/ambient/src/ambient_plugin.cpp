@@ -60,6 +60,16 @@ class AmbientPlugin final : public Plugin {
         {.name = "Ambient.Irradiance",
          .point = ExtensionPoint::IndirectDiffuse,
          .setup = [this](RenderGraph& graph, const FrameContext& frame) { setup(graph, frame); }});
+    // The debug view shows the irradiance channel as it is (W/m², not tone-mapped):
+    // publishing it as debug.view is all it takes.
+    ctx.addPassHook({.name = "Ambient.DebugView",
+                     .point = ExtensionPoint::DebugView,
+                     .setup = [this](RenderGraph& graph, const FrameContext&) {
+                       Blackboard& bb = graph.blackboard();
+                       const TextureHandle irradiance = bb.texture(channels::IndirectDiffuse);
+                       if (debugMode_.get() == 1 && irradiance.valid())
+                         bb.setTexture(channels::DebugView, irradiance);
+                     }});
   }
 
  private:

@@ -1,0 +1,81 @@
+#version 460
+// Debug modes 2 (opacity) and 3 (emittance): ray-marched views of the voxel textures,
+// as in the seed's Cornell box pictures. Each pixel's ray walks the chosen level (or,
+// with level −1, the finest level at each point) half a voxel at a time and shows the
+// first voxel whose opacity passes 5%: grey by opacity, or its emitted radiance.
+#include "bounce/common.glsl"
+#include "bounce/color.glsl"
+#include "vxgi/clip_map.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(push_constant) uniform Push {
+  mat4 inverseViewProjection;
+  vec4 cameraPosition;
+  ivec4 params;  // x, y: view size; z: mode (2 opacity, 3 emittance); w: level (−1: all)
+  vec4 display;  // x: exposure (multiplier)
+} pc;
+layout(binding = 23, rgba8) uniform writeonly image2D outView;
+
+vec4 fetchVoxel(vec3 p, int level, out bool inside) {
+  ivec3 c = ivec3(floor(p / vxgiVoxelSize(level)));
+  ivec3 local = c - clipMap.levelOrigin[level].xyz;
+  inside = all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, ivec3(clipMap.mapSize)));
+  ivec3 t = vxgiWrap(c) + ivec3(0, 0, level * clipMap.mapSize);
+  vec4 o0 = texelFetch(opacityClip0, t, 0);
+  float opacity = max(o0.x, max(o0.y, o0.z));
+#if VXGI_DIRECTIONS == 6
+  vec4 o1 = texelFetch(opacityClip1, t, 0);
+  opacity = max(opacity, max(o1.x, max(o1.y, o1.z)));
+#endif
+  vec3 e = vec3(0.0);
+#if !VXGI_AO_MODE
+  // The brightest facing direction: what the voxel sends the most light into.
+  e = max(max(texelFetch(emittanceClip0, t, 0).rgb, texelFetch(emittanceClip1, t, 0).rgb), texelFetch(emittanceClip2, t, 0).rgb);
+#if VXGI_DIRECTIONS == 6
+  e = max(e, max(max(texelFetch(emittanceClip3, t, 0).rgb, texelFetch(emittanceClip4, t, 0).rgb), texelFetch(emittanceClip5, t, 0).rgb));
+#endif
+  e *= clipMap.emittanceDecode;
+#endif
+  return vec4(e, opacity);
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, pc.params.xy))) return;
+  vec2 uv = (vec2(pixel) + 0.5) / vec2(pc.params.xy);
+  vec4 far = pc.inverseViewProjection * vec4(uv * 2.0 - 1.0, 0.5, 1.0);
+  vec3 dir = safeNormalize(far.xyz / far.w - pc.cameraPosition.xyz, vec3(0.0, 0.0, -1.0));
+  int fixedLevel = pc.params.w;
+  vec3 color = vec3(0.0);
+  float t = 0.0;
+  int level = fixedLevel >= 0 ? min(fixedLevel, clipMap.levelCount - 1) : 0;
+  for (int i = 0; i < 2048; ++i) {
+    vec3 p = pc.cameraPosition.xyz + dir * t;
+    if (fixedLevel < 0) {
+      int l = vxgiFinestLevelAt(p, 0);
+      level = l < 0 ? clipMap.levelCount - 1 : l;  // outside every level: coarse steps until it enters
+    }
+    bool inside;
+    vec4 voxel = fetchVoxel(p, level, inside);
+    if (inside && voxel.a > 0.05) {
+      if (pc.params.z == 2) {
+        // Shade by the face the ray entered through, so the voxel shapes read.
+        float v = vxgiVoxelSize(level);
+        vec3 cell = floor(p / v) * v;
+        vec3 tEntry = mix((cell + v - pc.cameraPosition.xyz), (cell - pc.cameraPosition.xyz), greaterThan(dir, vec3(0.0))) /
+                      mix(vec3(1e-20), dir, greaterThan(abs(dir), vec3(1e-20)));
+        vec3 faceShade = vec3(0.75, 1.0, 0.55);
+        float shade = tEntry.x >= tEntry.y && tEntry.x >= tEntry.z ? faceShade.x : (tEntry.y >= tEntry.z ? faceShade.y : faceShade.z);
+        color = vec3(voxel.a * shade);
+      } else {
+        color = voxel.rgb / max(voxel.a, 1e-3) * pc.display.x;
+      }
+      break;
+    }
+    t += 0.5 * vxgiVoxelSize(level);
+    if (t > 1e4) break;
+  }
+  color = sanitize(color, HALF_MAX);
+  if (pc.params.z != 2) color = color / (1.0 + color);  // Reinhard: readable for any brightness
+  imageStore(outView, pixel, vec4(linearToSrgb(color), 1.0));
+}

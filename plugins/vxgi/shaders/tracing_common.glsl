@@ -1,0 +1,56 @@
+// Inputs shared by the G-buffer tracing passes: push constants, G-buffer and helpers.
+#ifndef VXGI_TRACING_COMMON_GLSL
+#define VXGI_TRACING_COMMON_GLSL
+
+#include "bounce/common.glsl"
+#include "bounce/gbuffer.glsl"
+#ifndef VXGI_NO_TRACING  // the interpolation pass reads only the G-buffer
+#include "vxgi/trace_cone.glsl"
+#endif
+
+layout(push_constant) uniform Push {
+  mat4 inverseViewProjection;
+  vec4 cameraPosition;   // xyz
+  ivec4 sizes;           // x, y: full view size; z: sparsity k (trace every k-th pixel); w: cones
+  vec4 tracing;          // x: intensity, y: step factor, z: max distance (m), w: normal offset (voxels)
+  vec4 extra;            // x: ambient range (m), y: specular roughness threshold, z: min cone factor, w: -
+} pc;
+
+layout(binding = 20) uniform sampler2D gNormalRoughness;
+layout(binding = 21) uniform sampler2D gDepth;
+layout(binding = 22) uniform sampler2D gMaterial;
+
+// Orthonormal basis around n (Duff et al. 2017: branchless, no singularity).
+void basis(vec3 n, out vec3 t, out vec3 b) {
+  float s = n.z >= 0.0 ? 1.0 : -1.0;
+  float a = -1.0 / (s + n.z);
+  float c = n.x * n.y * a;
+  t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
+  b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+// World position and normal of a full-resolution pixel; false for background or a
+// pixel whose normal is unusable.
+bool surfaceAt(ivec2 pixel, out vec3 P, out vec3 N, out float roughness) {
+  float depth = texelFetch(gDepth, pixel, 0).r;
+  vec4 nr = texelFetch(gNormalRoughness, pixel, 0);
+  roughness = nr.w;
+  if (isBackground(depth)) return false;
+  N = safeNormalize(nr.xyz, vec3(0.0));
+  if (dot(N, N) < 0.5) return false;  // zero normal in the G-buffer: no direction to trace
+  vec2 uv = (vec2(pixel) + 0.5) / vec2(pc.sizes.xy);
+  P = worldPositionFromDepth(uv, depth, pc.inverseViewProjection);
+  return all(equal(P, P)) && !any(isinf(P));
+}
+
+#ifndef VXGI_NO_TRACING
+// Where cones start: off the surface along its normal by `normalOffset` voxels of the
+// finest level that holds P, so a cone does not see the surface it leaves.
+vec3 coneOrigin(vec3 P, vec3 N) {
+  int level = max(vxgiFinestLevelAt(P, 0), 0);
+  return P + N * (pc.tracing.w * vxgiVoxelSize(level));
+}
+
+#endif  // VXGI_NO_TRACING
+
+#endif

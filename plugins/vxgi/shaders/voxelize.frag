@@ -1,0 +1,132 @@
+#version 460
+// Voxelization, step 3: each fragment is a voxel column the triangle touches. It adds
+// the surface's projected coverage, and (unless in ambient-occlusion mode) the radiance
+// it sends out × that coverage, to every voxel of the column the surface passes
+// through, per facing direction, with float atomics into the scratch volume. The
+// resolve pass turns the sums into opacity and premultiplied emittance.
+#extension GL_EXT_shader_atomic_float : require
+#define VXGI_CLIP_MAP_TEXTURES 0
+#include "bounce/common.glsl"
+#include "bounce/scene.glsl"
+#include "bounce/lights.glsl"
+#include "vxgi/clip_map.glsl"
+
+SCENE_DRAW_PUSH_CONSTANTS(ivec4 regionMin; ivec4 regionMax; ivec4 innerMin; ivec4 innerMax; ivec4 scratchLayout;
+                          vec4 ambient;)
+
+SCENE_MATERIALS(27)
+LIGHTS(24)
+SHADOW_MATRICES(25)
+#include "bounce/shadows.glsl"
+layout(binding = 26) uniform sampler2DArrayShadow shadowMaps;
+layout(binding = 28) uniform sampler2D baseColorTexture;
+layout(binding = 29) uniform sampler2D emissiveTexture;
+
+layout(binding = 21, r32f) uniform coherent image3D scratch;
+// Per material: x thickness (voxels), y proportional emittance, z omni-directional.
+layout(std430, binding = 22) readonly buffer VxgiMaterialParams { vec4 materialParams[]; };
+// Per light: 1 when it is flagged "VXGI indirect lighting".
+layout(std430, binding = 23) readonly buffer VxgiLightFlags { uint lightFlags[]; };
+
+layout(location = 0) in vec3 gWorld;
+layout(location = 1) in vec2 gUv;
+layout(location = 2) flat in vec3 gNormal;
+layout(location = 3) flat in int gAxis;
+layout(location = 4) flat in vec4 gPixelBox;
+
+layout(location = 0) out vec4 unusedColor;
+
+// Scratch channel `channel` of toroidal voxel t: channels tile the volume, cx per row
+// along X and the rest along Z (see ScratchLayout in voxelization.cpp).
+ivec3 scratchCoord(ivec3 t, int channel) {
+  int n = clipMap.mapSize, cx = draw.scratchLayout.x;
+  return t + ivec3((channel % cx) * n, 0, (channel / cx) * n);
+}
+
+bool inBox(ivec3 c, ivec4 lo, ivec4 hi) { return all(greaterThanEqual(c, lo.xyz)) && all(lessThan(c, hi.xyz)); }
+
+// Diffuse radiance a surface with normal N sends out: emission plus the flagged
+// lights' light it reflects (with their shadow maps) plus the optional constant ambient
+// (the seed's remedy for single-bounce specular).
+vec3 outgoingRadiance(vec3 N, vec3 albedo, vec3 emission) {
+  vec3 reflected = albedo * draw.ambient.rgb;
+  uint lightCount = uint(draw.ambient.w);
+  for (uint i = 0u; i < lightCount; ++i) {
+    if (lightFlags[i] == 0u) continue;
+    Light light = lights[i];
+    vec3 L, E;
+    float dist;
+    lightIncidence(light, gWorld, L, E, dist);
+    float cosine = dot(N, L);
+    if (cosine <= 0.0 || all(equal(E, vec3(0.0)))) continue;
+    reflected += albedo * E * cosine * shadowFactor(light, gWorld, N, L, shadowMaps);
+  }
+  return emission + reflected * INV_PI;
+}
+
+void main() {
+  unusedColor = vec4(0.0);
+  if (any(lessThan(gl_FragCoord.xy, gPixelBox.xy)) || any(greaterThan(gl_FragCoord.xy, gPixelBox.zw))) discard;
+  int level = draw.regionMin.w;
+  float v = vxgiVoxelSize(level);
+  vec3 u = gWorld / v;
+  ivec3 c = ivec3(floor(u));
+  // The voxels along the projection axis that this pixel's piece of the surface passes
+  // through: its depth ± half the depth change across the pixel, extended behind the
+  // surface by the material's thickness (in voxels; 1 = the surface alone).
+  float depth = u[gAxis];
+  float span = 0.5 * (abs(dFdx(depth)) + abs(dFdy(depth)));
+  span = min(span, 2.0);  // the dominant axis bounds it by √2; guard against NaN derivatives
+  vec4 params = materialParams[draw.material];
+  float behind = max(params.x - 1.0, 0.0) * -sign(gNormal[gAxis]);
+  float first = floor(min(depth - span, depth - span + behind)), last = floor(max(depth + span, depth + span + behind));
+
+  Material m = materials[draw.material];
+  vec3 albedo = m.baseColor.rgb * texture(baseColorTexture, gUv).rgb * (1.0 - saturate(m.metallic));
+  vec3 emission = m.emission.rgb * texture(emissiveTexture, gUv).rgb;
+  bool doubleSided = (m.textures1.w & 1) != 0;
+  vec3 n = gNormal;
+  vec3 a = abs(n);
+  float dominant = max(a[gAxis], 1e-6);
+  // Projected coverage of this piece along each axis, relative to one voxel face.
+  vec3 coverage = a / dominant;
+  bool proportional = params.y > 0.5, omni = params.z > 0.5;
+
+#if !VXGI_AO_MODE
+  vec3 front = sanitize(outgoingRadiance(n, albedo, emission), HALF_MAX);
+  vec3 back = doubleSided ? sanitize(outgoingRadiance(-n, albedo, emission), HALF_MAX) : vec3(0.0);
+#endif
+  int perDirection = draw.scratchLayout.y;  // 4 (rgb·w, w) or 1 (w, AO mode)
+  // Integer bounds: a float counter stops advancing at large magnitudes, and a corner
+  // extrapolated far out for a sliver triangle could make the span huge.
+  if (!(abs(depth) < 1e6)) discard;
+  int k0 = int(first), k1 = min(int(last), k0 + 8);
+  for (int k = k0; k <= k1; ++k) {
+    ivec3 voxel = c;
+    voxel[gAxis] = k;
+    if (!inBox(voxel, draw.regionMin, draw.regionMax) || inBox(voxel, draw.innerMin, draw.innerMax)) continue;
+    ivec3 t = vxgiWrap(voxel);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int s = 0; s < 2; ++s) {
+        float facing = s == 0 ? n[axis] : -n[axis];  // > 0: the front faces direction ±axis
+        bool frontSide = facing > 0.0;
+        float w = frontSide || doubleSided ? coverage[axis] : 0.0;
+        float emitWeight = omni ? 1.0 : (proportional ? w : (w > 0.0 ? 1.0 : 0.0));
+        if (w <= 0.0 && !omni) continue;
+        int direction = VXGI_DIRECTIONS == 6 ? axis + 3 * s : axis;
+        int base = direction * perDirection;
+#if VXGI_AO_MODE
+        imageAtomicAdd(scratch, scratchCoord(t, base), w);
+#else
+        vec3 radiance = frontSide || omni ? front : back;  // omni: the front radiance, every way
+        imageAtomicAdd(scratch, scratchCoord(t, base + 3), w);
+        if (emitWeight > 0.0) {
+          imageAtomicAdd(scratch, scratchCoord(t, base + 0), radiance.r * emitWeight);
+          imageAtomicAdd(scratch, scratchCoord(t, base + 1), radiance.g * emitWeight);
+          imageAtomicAdd(scratch, scratchCoord(t, base + 2), radiance.b * emitWeight);
+        }
+#endif
+      }
+    }
+  }
+}

@@ -1,0 +1,96 @@
+// TraceCone: the cone-tracing primitive other shaders may call (seed 001, slide 26).
+//
+//   #include "vxgi/trace_cone.glsl"
+//   ConeTracingArguments args = DefaultConeTracingArguments();
+//   args.direction = R;  args.coneFactor = 0.2;  args.firstSamplePosition = P + N * 0.05;
+//   ConeTracingResults cone = TraceCone(args);
+//   // cone.irradiance, cone.ambient, cone.finalOpacity
+//
+// The cone marches front to back through the clip-map, one sample per step whose
+// footprint matches the cone's diameter there, and composites premultiplied emittance
+// under the opacity accumulated so far:
+//   radiance += (1 − opacity) · emittance_i ;  opacity += (1 − opacity) · opacity_i
+#ifndef VXGI_TRACE_CONE_GLSL
+#define VXGI_TRACE_CONE_GLSL
+
+#include "clip_map.glsl"
+
+struct ConeTracingArguments {
+  vec3 direction;            // unit direction the cone marches along
+  float coneFactor;          // cone diameter per metre of distance: 2·tan(half-angle)
+  vec3 firstSamplePosition;  // where marching starts (already offset from the surface)
+  float firstSampleDistance; // distance the first sample is taken at, in finest voxels
+  float maxDistance;         // metres; the cone stops there
+  float stepFactor;          // step length as a fraction of the footprint (≤ 1)
+  float ambientRange;        // metres: occlusion beyond this does not count for `ambient`
+};
+
+struct ConeTracingResults {
+  // π × the radiance the cone gathered: the irradiance a surface facing the cone would
+  // receive if its whole hemisphere looked like this cone. Diffuse tracing averages
+  // it over cones of equal projected solid angle.
+  vec3 irradiance;
+  float ambient;       // 1 − occlusion within ambientRange (1: unoccluded)
+  float finalOpacity;  // opacity accumulated along the whole cone
+};
+
+ConeTracingArguments DefaultConeTracingArguments() {
+  ConeTracingArguments a;
+  a.direction = vec3(0.0, 0.0, 1.0);
+  a.coneFactor = 1.0;
+  a.firstSamplePosition = vec3(0.0);
+  a.firstSampleDistance = 1.0;
+  a.maxDistance = 1e30;
+  a.stepFactor = 0.5;
+  a.ambientRange = 1e30;
+  return a;
+}
+
+// Opacity where the cone stops early: what remains would change the result by < 0.5%.
+const float VXGI_OPAQUE = 0.995;
+// Bounds the loop on any input (a NaN distance, a zero cone factor): 512 samples reach
+// 2^9 footprints even with step factor 0.1, past the coarsest mip of any clip-map.
+const int VXGI_MAX_STEPS = 512;
+
+ConeTracingResults TraceCone(ConeTracingArguments args) {
+  ConeTracingResults res;
+  res.irradiance = vec3(0.0);
+  res.ambient = 1.0;
+  res.finalOpacity = 0.0;
+  vec3 r = safeNormalize(args.direction, vec3(0.0, 0.0, 1.0));
+  float coneFactor = max(args.coneFactor, 1e-3);
+  float stepFactor = clamp(args.stepFactor, 0.05, 1.0);
+  float v0 = clipMap.voxelSize0;
+  float t = max(args.firstSampleDistance, 0.0) * v0;
+  float maxDistance = min(args.maxDistance, 1e30);
+  vec3 radiance = vec3(0.0);
+  float opacity = 0.0, ambientOpacity = 0.0;
+  for (int i = 0; i < VXGI_MAX_STEPS && t < maxDistance && opacity < VXGI_OPAQUE; ++i) {
+    // The footprint never shrinks below a finest voxel: finer detail is not stored.
+    float diameter = max(coneFactor * t, v0);
+    vec3 p = args.firstSamplePosition + r * t;
+    bool valid;
+    VxgiSample s = vxgiSample(p, diameter, r, valid);
+    if (!valid) break;  // left the clip-map: nothing more to gather
+    float step = stepFactor * diameter;
+    // The stored opacity is for a path of one footprint; a shorter step sees less of it
+    // (Beer–Lambert: 1 − (1 − α)^(step / footprint)).
+    float alpha = clamp(s.opacity, 0.0, 1.0);
+    float corrected = 1.0 - pow(max(1.0 - alpha, 1e-6), step / diameter);
+    vec3 emittance = alpha > 1e-6 ? s.emittance * (corrected / alpha) : vec3(0.0);
+    radiance += (1.0 - opacity) * max(emittance, vec3(0.0));
+    if (t <= args.ambientRange) ambientOpacity += (1.0 - ambientOpacity) * corrected;
+    opacity += (1.0 - opacity) * corrected;
+    t += step;
+  }
+  // Stopped on an opaque surface: the last < 0.5% is more of the same surface, so
+  // renormalise instead of leaving the cone that much too dark (this is what makes a
+  // closed furnace come out exact rather than 0.5% low).
+  if (opacity >= VXGI_OPAQUE) radiance /= opacity;
+  res.irradiance = PI * radiance;
+  res.ambient = 1.0 - ambientOpacity;
+  res.finalOpacity = opacity;
+  return res;
+}
+
+#endif

@@ -1,0 +1,115 @@
+#pragma once
+// The geometry and storage of the VXGI clip-map (seed 001, slide 12): `levels` clipped
+// levels of size³ voxels, each covering twice the extent of the one below and centred on
+// an anchor, then a mip pyramid of the coarsest level down to 1³.
+//
+// Storage, per voxel, indexed by the direction a surface faces ("facing direction"):
+//   opacity:   3 axes in one RGBA8 texture, or 6 signed directions in two
+//              (+X+Y+Z and −X−Y−Z); projected coverage, 0..1
+//   emittance: one texture per facing direction, RGBA8 (scaled by the storage scale)
+//              or RGBA16F; rgb is radiance × coverage (premultiplied)
+// so 3 directions with RGBA8 cost 4 + 3·4 = 16 B per voxel and 6 directions with FP16
+// 8 + 6·8 = 56 B, the seed's range. Clipped levels are stacked along Z in one 3D
+// texture per channel (size × size × size·levels) and addressed toroidally: world
+// voxel c of level l lives at (c mod size) + (0, 0, l·size), so moving the anchor only
+// rewrites the slabs that came into view.
+
+#include <bounce/scene/aabb.h>
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace bounce::vxgi {
+
+/// What the clip-map stores; changing any of these re-creates its textures.
+struct ClipMapFormat {
+  uint32_t mapSize = 128;             ///< voxels per side of each clipped level (power of two, 32..256)
+  uint32_t stackLevels = 5;           ///< clipped levels (3..5)
+  bool sixDirections = true;          ///< 6 signed facing directions, else 3 axes
+  bool emittanceFp16 = false;         ///< RGBA16F emittance, else RGBA8 × storage scale
+  bool ambientOcclusionMode = false;  ///< opacity only: no emittance textures at all
+
+  uint32_t directionCount() const { return sixDirections ? 6u : 3u; }
+  uint32_t opacityTextureCount() const { return sixDirections ? 2u : 1u; }
+  uint32_t emittanceTextureCount() const { return ambientOcclusionMode ? 0u : directionCount(); }
+  /// Bytes per voxel of one clipped level or mip: the seed's 16..56 B.
+  uint32_t bytesPerVoxel() const;
+  /// Coarser mip levels of the coarsest clipped level: size/2 ... 1.
+  uint32_t mipCount() const;
+  /// Device memory of every clip-map texture: levels × size³ × bytes per voxel + mips.
+  uint64_t bytes() const;
+  uint64_t clipBytes() const;
+  uint64_t mipBytes() const;
+  bool operator==(const ClipMapFormat&) const = default;
+};
+
+/// Why a format is not allowed, or "" (power-of-two size in range, levels in range).
+std::string validate(const ClipMapFormat& format);
+
+/// One clipped level's placement: integer voxel coordinates of its first voxel.
+struct LevelPlacement {
+  glm::ivec3 origin{0};
+  float voxelSize = 1.0f;
+  /// World box the level covers.
+  Aabb bounds(uint32_t mapSize) const;
+};
+
+/// A box of voxels [min, max) at one level, in world voxel coordinates.
+struct VoxelBox {
+  glm::ivec3 min{0};
+  glm::ivec3 max{0};
+  bool empty() const { return glm::any(glm::lessThanEqual(max, min)); }
+  uint64_t volume() const;
+  bool operator==(const VoxelBox&) const = default;
+};
+
+class ClipMapLayout {
+ public:
+  /// Places every level around `anchor` with the finest voxel size `voxelSize0`.
+  /// Each level's origin is even, so that its voxel pairs line up with the voxels of
+  /// the next coarser level (downsampling reads whole 2×2×2 blocks), and the finer
+  /// level sits inside the coarser one with at least size/4 voxels of margin.
+  static ClipMapLayout place(const ClipMapFormat& format, float voxelSize0, glm::vec3 anchor);
+
+  const ClipMapFormat& format() const { return format_; }
+  const std::vector<LevelPlacement>& levels() const { return levels_; }
+  float voxelSize0() const { return voxelSize0_; }
+  /// The whole level as a box of voxels.
+  VoxelBox levelBox(uint32_t level) const;
+  /// The part of `level` (≥ 1) that the next finer level covers, in this level's voxels:
+  /// filled by downsampling rather than voxelization.
+  VoxelBox innerBox(uint32_t level) const;
+  /// World box of `box` at `level`.
+  Aabb worldBox(uint32_t level, const VoxelBox& box) const;
+  /// The voxels of `level` a world box touches (clipped to the level).
+  VoxelBox voxelsTouching(uint32_t level, const Aabb& world) const;
+
+  bool operator==(const ClipMapLayout& o) const {
+    return format_ == o.format_ && voxelSize0_ == o.voxelSize0_ && origins() == o.origins();
+  }
+  std::vector<glm::ivec3> origins() const;
+
+ private:
+  ClipMapFormat format_;
+  float voxelSize0_ = 1.0f;
+  std::vector<LevelPlacement> levels_;
+};
+
+/// The voxels of `now` that `before` did not cover: up to three disjoint slabs (one
+/// per axis the level moved along). Empty when the level did not move; the whole level
+/// when it moved by at least its size.
+std::vector<VoxelBox> newlyCovered(const VoxelBox& before, const VoxelBox& now);
+
+/// Intersection of two boxes (empty when they do not overlap).
+VoxelBox intersect(const VoxelBox& a, const VoxelBox& b);
+
+/// The finest voxel size the clip-map uses when r.VXGI.VoxelSize is 0: the second level
+/// covers the scene's largest extent (so with the anchor inside the scene, level 1 holds
+/// all of it and level 0 the half around the viewer), with 5% margin.
+float automaticVoxelSize(const Aabb& sceneBounds, uint32_t mapSize);
+
+}  // namespace bounce::vxgi

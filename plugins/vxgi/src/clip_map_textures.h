@@ -1,0 +1,58 @@
+#pragma once
+// The clip-map's GPU textures: persistent across frames, re-created when the format
+// changes, imported into each frame's graph, and bound to shaders by the names
+// vxgi/clip_map.glsl declares.
+
+#include "clip_map_layout.h"
+
+#include <bounce/gpu/bindings.h>
+#include <bounce/graph/persistent_resource.h>
+#include <bounce/graph/render_graph.h>
+
+#include <memory>
+#include <vector>
+
+namespace bounce::vxgi {
+
+/// This frame's versions of every clip-map texture.
+struct ClipMapHandles {
+  std::vector<TextureHandle> opacityClip, emittanceClip, opacityMip, emittanceMip;
+  BufferHandle constants;  ///< ClipMapConstants for this frame
+};
+
+class ClipMapTextures {
+ public:
+  /// (Re)creates the textures for `format`; true when anything changed.
+  bool configure(const ClipMapFormat& format);
+  const ClipMapFormat& format() const { return format_; }
+
+  /// Imports every texture into `graph` (constants are left invalid).
+  ClipMapHandles import(RenderGraph& graph);
+
+  /// Sampled bindings for tracing and debug shaders (names of clip_map.glsl).
+  static void bindSampled(gpu::Bindings& bindings, const ClipMapHandles& handles);
+  /// Bytes of all textures (the formula's value, checked against the descriptions).
+  uint64_t bytes() const;
+
+ private:
+  ClipMapFormat format_{};
+  bool configured_ = false;
+  std::vector<std::unique_ptr<PersistentTexture>> opacityClip_, emittanceClip_, opacityMip_, emittanceMip_;
+};
+
+/// std430 VxgiClipMap in clip_map.glsl.
+struct ClipMapConstants {
+  glm::ivec4 levelOrigin[5];
+  float voxelSize0;
+  int32_t mapSize;
+  int32_t levelCount;
+  float emittanceDecode;
+};
+static_assert(sizeof(ClipMapConstants) == 96);
+
+ClipMapConstants makeConstants(const ClipMapLayout& layout, float emittanceDecode);
+
+/// Shader defines for a format: VXGI_DIRECTIONS, VXGI_AO_MODE, VXGI_EMITTANCE_FP16.
+std::vector<std::pair<std::string, std::string>> shaderDefines(const ClipMapFormat& format);
+
+}  // namespace bounce::vxgi

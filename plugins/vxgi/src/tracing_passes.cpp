@@ -1,0 +1,148 @@
+#include "vxgi_passes.h"
+
+#include <bounce/gpu/pass_context.h>
+#include <bounce/graph/channels.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace bounce::vxgi {
+
+namespace {
+
+constexpr const char* kShaders = "plugins/vxgi/shaders/";
+
+gpu::ShaderSource shader(const char* file, const ClipMapFormat& format) {
+  return {std::string(kShaders) + file, shaderDefines(format)};
+}
+
+// tracing_common.glsl's push constants.
+struct TracingPush {
+  glm::mat4 inverseViewProjection;
+  glm::vec4 cameraPosition;
+  glm::ivec4 sizes;
+  glm::vec4 tracing;
+  glm::vec4 extra;
+};
+static_assert(sizeof(TracingPush) <= 128);
+
+void bindGBuffer(gpu::Bindings& bind, TextureHandle normal, TextureHandle depth, TextureHandle material) {
+  bind.texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
+      .texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
+      .texture("gMaterial", material, gpu::SamplerKind::NearestClamp);
+}
+
+}  // namespace
+
+void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& s,
+                      const ClipMapHandles& handles, const ClipMapFormat& format, bool anyVoxelized,
+                      bool anySpecular) {
+  Blackboard& bb = graph.blackboard();
+  TracingPush push{};
+  push.inverseViewProjection = frame.view.inverseViewProjection;
+  push.cameraPosition = glm::vec4(frame.view.position, 1.0f);
+  const int32_t sparsity = frame.setting(s.diffuseSparsity);
+  push.sizes = glm::ivec4(int32_t(frame.view.width), int32_t(frame.view.height), sparsity,
+                          frame.setting(s.diffuseCones));
+  push.tracing = glm::vec4(frame.setting(s.diffuseIntensity), frame.setting(s.tracingStep),
+                           frame.setting(s.maxDistance), s.normalOffset.get());
+  push.extra = glm::vec4(frame.setting(s.ambientRange), s.specularRoughnessThreshold.get(),
+                         s.specularMinConeFactor.get(), 0.0f);
+  const bool ao = format.ambientOcclusionMode;
+  const bool diffuseOn = s.diffuseEnable.get();
+  const VkFormat diffuseFormat = ao ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT;
+  auto needsVoxels = [anyVoxelized] {
+    return anyVoxelized ? PassDecision::run("voxelized materials in the scene")
+                        : PassDecision::skip("no material is used with VXGI voxelization");
+  };
+
+  // Diffuse (or ambient occlusion), at 1/k resolution when sparse.
+  TextureHandle traced;
+  graph.addPass("VXGI.DiffuseTracing", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+    TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+    TextureHandle material = b.read(bb.texture(channels::GBufferMaterial), Access::Sampled);
+    ClipMapHandles h = handles;
+    h.constants = b.read(h.constants, Access::StorageRead);
+    for (auto* list : {&h.opacityClip, &h.emittanceClip, &h.opacityMip, &h.emittanceMip})
+      for (TextureHandle& t : *list) t = b.read(t, Access::Sampled);
+    traced = b.write(
+        b.createTexture("VXGI.DiffuseTraced", TextureDesc::viewSized(diffuseFormat, 1.0f / float(sparsity))),
+        Access::StorageWrite);
+    if (sparsity == 1) bb.setTexture(ao ? channels::AmbientOcclusion : channels::IndirectDiffuse, traced);
+    b.condition(needsVoxels);
+    b.condition([diffuseOn, ao] {
+      return diffuseOn ? PassDecision::run(ao ? "ambient-occlusion mode" : "diffuse tracing on")
+                       : PassDecision::skip("r.VXGI.DiffuseTracingEnable is 0");
+    });
+    TextureHandle out = traced;
+    const uint32_t width = (frame.view.width + uint32_t(sparsity) - 1) / uint32_t(sparsity);
+    const uint32_t height = (frame.view.height + uint32_t(sparsity) - 1) / uint32_t(sparsity);
+    return [=](PassContext& ctx) {
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("diffuse.comp", format));
+      gpu::Bindings bind;
+      ClipMapTextures::bindSampled(bind, h);
+      bindGBuffer(bind, normal, depth, material);
+      bind.storage("outTraced", out);
+      ctx.dispatchThreads(pipeline, bind, {width, height, 1}, push);
+    };
+  });
+  if (sparsity > 1) {
+    graph.addPass("VXGI.DiffuseInterpolation", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+      TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+      TextureHandle material = b.read(bb.texture(channels::GBufferMaterial), Access::Sampled);
+      TextureHandle sparse = b.read(traced, Access::Sampled);
+      TextureHandle full = b.write(b.createTexture("VXGI.Diffuse", TextureDesc::viewSized(diffuseFormat)),
+                                   Access::StorageWrite);
+      bb.setTexture(ao ? channels::AmbientOcclusion : channels::IndirectDiffuse, full);
+      return [=](PassContext& ctx) {
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("upsample.comp", format));
+        gpu::Bindings bind;
+        bindGBuffer(bind, normal, depth, material);
+        bind.texture("traced", sparse, gpu::SamplerKind::NearestClamp).storage("outFull", full);
+        ctx.dispatchThreads(pipeline, bind, {push.sizes.x, push.sizes.y, 1}, push);
+      };
+    });
+  }
+
+  if (ao) return;  // no emittance: nothing to reflect
+  TracingPush specularPush = push;
+  specularPush.tracing.x = frame.setting(s.specularIntensity);
+  const bool specularOn = s.specularEnable.get();
+  const float threshold = s.specularRoughnessThreshold.get();
+  graph.addPass("VXGI.SpecularTracing", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+    TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+    TextureHandle material = b.read(bb.texture(channels::GBufferMaterial), Access::Sampled);
+    ClipMapHandles h = handles;
+    h.constants = b.read(h.constants, Access::StorageRead);
+    for (auto* list : {&h.opacityClip, &h.emittanceClip, &h.opacityMip, &h.emittanceMip})
+      for (TextureHandle& t : *list) t = b.read(t, Access::Sampled);
+    TextureHandle out =
+        b.write(b.createTexture("VXGI.Specular", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
+                Access::StorageWrite);
+    bb.setTexture(channels::IndirectSpecular, out);
+    b.condition(needsVoxels);
+    b.condition([specularOn] {
+      return specularOn ? PassDecision::run("specular tracing on")
+                        : PassDecision::skip("r.VXGI.SpecularTracingEnable is 0");
+    });
+    b.condition([anySpecular, threshold] {
+      return anySpecular
+                 ? PassDecision::run(fmt::format("specular materials below roughness {}", threshold))
+                 : PassDecision::skip(fmt::format("no specular material below roughness {}", threshold));
+    });
+    return [=](PassContext& ctx) {
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("specular.comp", format));
+      gpu::Bindings bind;
+      ClipMapTextures::bindSampled(bind, h);
+      bindGBuffer(bind, normal, depth, material);
+      bind.storage("outTraced", out);
+      ctx.dispatchThreads(pipeline, bind, {specularPush.sizes.x, specularPush.sizes.y, 1}, specularPush);
+    };
+  });
+}
+
+}  // namespace bounce::vxgi

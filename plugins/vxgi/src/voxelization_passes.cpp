@@ -1,0 +1,321 @@
+#include "vxgi_passes.h"
+
+#include <bounce/gpu/pass_context.h>
+#include <bounce/graph/channels.h>
+
+#include <fmt/format.h>
+
+#include <memory>
+
+namespace bounce::vxgi {
+
+namespace {
+
+constexpr const char* kShaders = "plugins/vxgi/shaders/";
+
+gpu::ShaderSource shader(const char* file, const ClipMapFormat& format) {
+  return {std::string(kShaders) + file, shaderDefines(format)};
+}
+
+// The scratch volume of float sums: `channels` per voxel (4 per facing direction: rgb ×
+// coverage and coverage; 1 in ambient-occlusion mode), tiled `perRow` along X and the
+// rest along Z so no side exceeds 2048 texels (the usual maxImageDimension3D).
+struct ScratchLayout {
+  uint32_t channels = 0, perRow = 1;
+  static ScratchLayout of(const ClipMapFormat& f) {
+    ScratchLayout s;
+    s.channels = f.directionCount() * (f.ambientOcclusionMode ? 1u : 4u);
+    const uint32_t maxTiles = std::max(1u, 2048u / f.mapSize);
+    s.perRow = 1;
+    while ((s.channels + s.perRow - 1) / s.perRow > maxTiles) ++s.perRow;
+    return s;
+  }
+  TextureDesc desc(const ClipMapFormat& f) const {
+    TextureDesc d;
+    d.type = TextureType::Tex3D;
+    d.format = VK_FORMAT_R32_SFLOAT;
+    d.width = f.mapSize * perRow;
+    d.height = f.mapSize;
+    d.depth = f.mapSize * ((channels + perRow - 1) / perRow);
+    return d;
+  }
+};
+
+struct VoxelizePush {
+  glm::ivec4 regionMin, regionMax, innerMin, innerMax, scratchLayout;
+  glm::vec4 ambient;  // rgb: constant irradiance added; w: light count
+};
+static_assert(sizeof(VoxelizePush) <= 112);
+
+struct ResolvePush {
+  glm::ivec4 boxMin, boxSize, scratchLayout;
+  float storageScale;
+};
+
+struct DownsamplePush {
+  glm::ivec4 dstMin, dstSize;
+};
+
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
+  VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  mb.srcStageMask = src;
+  mb.srcAccessMask = srcAccess;
+  mb.dstStageMask = dst;
+  mb.dstAccessMask = dstAccess;
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.memoryBarrierCount = 1;
+  dep.pMemoryBarriers = &mb;
+  vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+// Writes (read-modify-write: the voxels outside this frame's boxes are kept).
+void writeAll(PassBuilder& b, std::vector<TextureHandle>& handles) {
+  for (TextureHandle& h : handles) h = b.write(h, Access::StorageReadWrite);
+}
+
+void bindStorage(gpu::Bindings& bind, const char* prefix, const std::vector<TextureHandle>& handles,
+                 uint32_t mip = gpu::Bindings::kAllMips) {
+  for (size_t i = 0; i < handles.size(); ++i) bind.storage(fmt::format("{}{}", prefix, i), handles[i], mip);
+}
+
+}  // namespace
+
+void addConstantsPass(RenderGraph& graph, ClipMapHandles& handles, const ClipMapConstants& constants) {
+  graph.addPass("VXGI.Constants", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    handles.constants =
+        b.write(b.createBuffer("VXGI.ClipMapConstants", {sizeof(ClipMapConstants)}), Access::TransferDst);
+    BufferHandle out = handles.constants;
+    return [=](PassContext& ctx) { ctx.upload(out, &constants, sizeof(constants)); };
+  });
+}
+
+void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
+                           ClipMapHandles& handles, const VoxelizationPlan& plan,
+                           std::function<void()> committed) {
+  Blackboard& bb = graph.blackboard();
+  const ClipMapLayout& layout = plan.layout;
+  const ClipMapFormat format = layout.format();
+  const ScratchLayout scratch = ScratchLayout::of(format);
+  const bool work = !plan.empty();
+  const std::string reason = plan.reason;
+
+  // Per-material and per-light parameters for the voxelization shader.
+  const Scene& scene = frame.scene;
+  std::vector<glm::vec4> materialParams;
+  std::vector<bool> voxelized;
+  for (const Material& m : scene.materials()) {
+    materialParams.emplace_back(settings.thickness.of(m), settings.proportional.of(m) ? 1.0f : 0.0f,
+                                settings.omniDirectional.of(m) ? 1.0f : 0.0f, 0.0f);
+    voxelized.push_back(settings.voxelize.of(m));
+  }
+  if (materialParams.empty()) materialParams.emplace_back(1.0f);
+  std::vector<uint32_t> lightFlags;
+  for (const Light& l : scene.lights()) lightFlags.push_back(settings.indirectLighting.of(l) ? 1u : 0u);
+  if (lightFlags.empty()) lightFlags.push_back(0u);
+  const uint32_t lightCount = uint32_t(scene.lights().size());
+  const float storageScale = settings.emittanceStorageScale.get();
+  const glm::vec3 ambient(frame.setting(settings.emittanceAmbient));
+
+  BufferHandle materialBuffer, lightBuffer;
+  graph.addPass("VXGI.VoxelizationInputs", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    materialBuffer =
+        b.write(b.createBuffer("VXGI.MaterialParams", {materialParams.size() * sizeof(glm::vec4)}),
+                Access::TransferDst);
+    lightBuffer = b.write(b.createBuffer("VXGI.LightFlags", {lightFlags.size() * sizeof(uint32_t)}),
+                          Access::TransferDst);
+    b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
+    BufferHandle mb = materialBuffer, lb = lightBuffer;
+    return [=](PassContext& ctx) {
+      ctx.upload(mb, materialParams.data(), materialParams.size() * sizeof(glm::vec4));
+      ctx.upload(lb, lightFlags.data(), lightFlags.size() * sizeof(uint32_t));
+    };
+  });
+
+  // What the voxelization samples as shadow maps when the frame has none (no light casts
+  // shadows): lights then carry no shadow layer and never read it, but the binding must
+  // still be a depth array.
+  TextureHandle noShadows;
+  graph.addPass("VXGI.NoShadowMaps", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
+    TextureDesc d{.type = TextureType::Tex2DArray, .format = VK_FORMAT_D32_SFLOAT, .width = 1, .height = 1};
+    noShadows = b.write(b.createTexture("VXGI.NoShadowMaps", d), Access::DepthAttachment);
+    TextureHandle out = noShadows;
+    return [=](PassContext& ctx) {
+      ctx.beginRendering({.depth = DepthTarget{out, 1.0f}});
+      ctx.endRendering();
+    };
+  });
+
+  TextureHandle scratchTexture;
+  for (uint32_t level = 0; level < format.stackLevels; ++level) {
+    const std::vector<VoxelBox> boxes = plan.boxes[level];
+    const VoxelBox inner = layout.innerBox(level);
+    std::vector<Aabb> worldBoxes;
+    for (const VoxelBox& box : boxes) worldBoxes.push_back(layout.worldBox(level, box));
+    const uint64_t voxels = [&] {
+      uint64_t n = 0;
+      for (const VoxelBox& box : boxes) n += box.volume();
+      return n;
+    }();
+    const bool levelWork = !boxes.empty();
+    auto decide = [levelWork, voxels, reason] {
+      return levelWork ? PassDecision::run(fmt::format("{}: {} voxels", reason, voxels))
+                       : PassDecision::skip(fmt::format("{} at this level", reason));
+    };
+
+    // Zero the sums: the previous level (or frame) left its own in them.
+    graph.addPass(
+        fmt::format("VXGI.ClearScratch.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+          if (!scratchTexture.valid()) scratchTexture = b.createTexture("VXGI.Scratch", scratch.desc(format));
+          scratchTexture = b.write(scratchTexture, Access::TransferDst);
+          b.condition(decide);
+          TextureHandle sums = scratchTexture;
+          return [=](PassContext& ctx) {
+            VkClearColorValue zero{};
+            VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+            vkCmdClearColorImage(ctx.cmd(), ctx.image(sums).handle(), ctx.layout(sums), &zero, 1, &range);
+          };
+        });
+
+    graph.addPass(fmt::format("VXGI.Voxelize.L{}", level), Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
+      scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+      TextureDesc targetDesc;
+      targetDesc.format = VK_FORMAT_R8_UNORM;
+      targetDesc.width = targetDesc.height = format.mapSize;
+      TextureHandle target =
+          b.write(b.createTexture(fmt::format("VXGI.VoxelizationTarget.L{}", level), targetDesc),
+                  Access::ColorAttachment);
+      BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      BufferHandle mats = b.read(materialBuffer, Access::StorageRead);
+      BufferHandle flags = b.read(lightBuffer, Access::StorageRead);
+      BufferHandle lights = b.read(bb.buffer("scene.lights"), Access::StorageRead);
+      BufferHandle matrices = b.read(bb.buffer("scene.shadowMatrices"), Access::StorageRead);
+      TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
+      TextureHandle fallbackShadows = b.read(noShadows, Access::Sampled);
+      b.condition(decide);
+      TextureHandle scratchHandle = scratchTexture;
+      return [=](PassContext& ctx) {
+        gpu::GraphicsPipelineDesc pd;
+        pd.vertex = shader("voxelize.vert", format);
+        pd.geometry = shader("voxelize.geom", format);
+        pd.fragment = shader("voxelize.frag", format);
+        pd.colorFormats = {VK_FORMAT_R8_UNORM};
+        pd.depthTest = false;
+        pd.depthWrite = false;
+        pd.cullMode = VK_CULL_MODE_NONE;  // both windings: the projection may mirror a triangle
+        const gpu::Pipeline& pipeline = ctx.pipelines().graphics(pd);
+        gpu::Bindings common;
+        common.buffer("SceneInstances", ctx.scene().instances())
+            .buffer("SceneMaterials", ctx.scene().materials())
+            .buffer("clipMap", constants)
+            .buffer("VxgiMaterialParams", mats)
+            .buffer("VxgiLightFlags", flags)
+            .buffer("SceneLights", lights)
+            .buffer("ShadowMatrices", matrices)
+            .texture("shadowMaps", ctx.available(shadows) ? shadows : fallbackShadows,
+                     gpu::SamplerKind::ShadowCompare)
+            .storage("scratch", scratchHandle);
+        ctx.beginRendering({.colors = {{target, std::nullopt}}});
+        for (size_t i = 0; i < boxes.size(); ++i) {
+          VoxelizePush push{glm::ivec4(boxes[i].min, int32_t(level)),
+                            glm::ivec4(boxes[i].max, 0),
+                            glm::ivec4(inner.min, 0),
+                            glm::ivec4(inner.max, 0),
+                            glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
+                            glm::vec4(ambient, float(lightCount))};
+          const Aabb world = worldBoxes[i];
+          ctx.drawScene(
+              pipeline, common,
+              [&](const gpu::GpuDraw& d) {
+                return d.material < voxelized.size() && voxelized[d.material] &&
+                       d.worldBounds.overlaps(world);
+              },
+              &push, sizeof(push));
+        }
+        ctx.endRendering();
+      };
+    });
+
+    graph.addPass(fmt::format("VXGI.Resolve.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      TextureHandle sums = b.read(scratchTexture, Access::StorageRead);
+      BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      writeAll(b, handles.opacityClip);
+      writeAll(b, handles.emittanceClip);
+      b.condition(decide);
+      const ClipMapHandles h = handles;
+      return [=](PassContext& ctx) {
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("resolve.comp", format));
+        gpu::Bindings bind;
+        bind.buffer("clipMap", constants).storage("scratch", sums);
+        bindStorage(bind, "opacityOut", h.opacityClip);
+        bindStorage(bind, "emittanceOut", h.emittanceClip);
+        for (const VoxelBox& box : boxes) {
+          const glm::ivec3 size = box.max - box.min;
+          ResolvePush push{glm::ivec4(box.min, int32_t(level)), glm::ivec4(size, 0),
+                           glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
+                           storageScale};
+          ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
+        }
+      };
+    });
+
+    if (level == 0) continue;
+    graph.addPass(fmt::format("VXGI.Downsample.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      writeAll(b, handles.opacityClip);
+      writeAll(b, handles.emittanceClip);
+      b.condition([work, reason] {
+        return work ? PassDecision::run("the finer level changed") : PassDecision::skip(reason);
+      });
+      const ClipMapHandles h = handles;
+      return [=](PassContext& ctx) {
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("downsample.comp", format));
+        gpu::Bindings bind;
+        bind.buffer("clipMap", constants);
+        // Source and destination are the same textures, different levels of the stack.
+        bindStorage(bind, "opacitySrc", h.opacityClip);
+        bindStorage(bind, "emittanceSrc", h.emittanceClip);
+        bindStorage(bind, "opacityDst", h.opacityClip);
+        bindStorage(bind, "emittanceDst", h.emittanceClip);
+        const glm::ivec3 size = inner.max - inner.min;
+        DownsamplePush push{glm::ivec4(inner.min, int32_t(level)), glm::ivec4(size, 0)};
+        ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
+      };
+    });
+  }
+
+  graph.addPass("VXGI.Mips", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+    for (TextureHandle h : handles.opacityClip) b.read(h, Access::StorageRead);
+    for (TextureHandle h : handles.emittanceClip) b.read(h, Access::StorageRead);
+    writeAll(b, handles.opacityMip);
+    writeAll(b, handles.emittanceMip);
+    b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
+    const ClipMapHandles h = handles;
+    return [=](PassContext& ctx) {
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("downsample.comp", format));
+      uint32_t size = format.mapSize / 2;
+      for (uint32_t mip = 0; mip < format.mipCount(); ++mip, size /= 2) {
+        gpu::Bindings bind;
+        bind.buffer("clipMap", constants);
+        if (mip == 0) {
+          bindStorage(bind, "opacitySrc", h.opacityClip);
+          bindStorage(bind, "emittanceSrc", h.emittanceClip);
+        } else {
+          bindStorage(bind, "opacitySrc", h.opacityMip, mip - 1);
+          bindStorage(bind, "emittanceSrc", h.emittanceMip, mip - 1);
+        }
+        bindStorage(bind, "opacityDst", h.opacityMip, mip);
+        bindStorage(bind, "emittanceDst", h.emittanceMip, mip);
+        DownsamplePush push{glm::ivec4(0), glm::ivec4(glm::ivec3(int32_t(size)), mip == 0 ? 1 : 2)};
+        ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
+        // The next mip reads what this one wrote.
+        memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+      }
+      committed();
+    };
+  });
+}
+
+}  // namespace bounce::vxgi

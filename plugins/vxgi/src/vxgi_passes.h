@@ -1,0 +1,35 @@
+#pragma once
+// The passes VXGI adds to a frame, by stage. Each function declares its passes on the
+// graph; the record callbacks capture only values (and the plugin-owned state passed
+// in), so a culled pass costs nothing.
+
+#include "clip_map_textures.h"
+#include "clip_map_update.h"
+#include "vxgi_settings.h"
+
+#include <bounce/frame/frame_context.h>
+#include <bounce/graph/render_graph.h>
+
+#include <functional>
+
+namespace bounce::vxgi {
+
+/// Uploads this frame's clip-map constants; sets handles.constants.
+void addConstantsPass(RenderGraph& graph, ClipMapHandles& handles, const ClipMapConstants& constants);
+
+/// Voxelizes the plan's boxes level by level, downsamples into coarser levels and the
+/// mip pyramid. `committed` runs (at record time) once the work is recorded.
+void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
+                           ClipMapHandles& handles, const VoxelizationPlan& plan,
+                           std::function<void()> committed);
+
+/// Diffuse (or ambient-occlusion) and specular tracing into the GI channels.
+void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
+                      const ClipMapHandles& handles, const ClipMapFormat& format, bool anyVoxelized,
+                      bool anySpecular);
+
+/// The debug views (r.VXGI.DebugMode ≠ 0).
+void addDebugPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
+                    const ClipMapHandles& handles, const ClipMapFormat& format);
+
+}  // namespace bounce::vxgi

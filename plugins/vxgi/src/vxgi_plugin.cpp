@@ -1,0 +1,164 @@
+// VXGI: voxel global illumination from a clip-map of opacity and emittance, by cone
+// tracing (seeds 000 and 001). One bounce of indirect diffuse and specular light, or
+// voxel ambient occlusion. Uses only the public plugin API.
+//
+// Per frame:
+//   AfterGBuffer     VXGI.Constants, VXGI.Voxelize.Ln / Resolve.Ln / Downsample.Ln,
+//                    VXGI.Mips — only what the scene and camera movement call for
+//   IndirectDiffuse  VXGI.DiffuseTracing (+ VXGI.DiffuseInterpolation when sparse),
+//                    VXGI.SpecularTracing — publish the GI channels
+//   DebugView        VXGI.DebugVoxels / VXGI.DebugChannel while r.VXGI.DebugMode ≠ 0
+
+#include "clip_map_textures.h"
+#include "clip_map_update.h"
+#include "vxgi_passes.h"
+#include "vxgi_settings.h"
+
+#include <bounce/core/log.h>
+#include <bounce/plugin/plugin.h>
+#include <bounce/plugin/plugin_context.h>
+
+#include <fmt/format.h>
+
+#include <optional>
+
+namespace bounce::vxgi {
+
+class VxgiPlugin final : public Plugin {
+ public:
+  void startup(PluginContext& ctx) override {
+    settings_.declare(ctx);
+    declareDebugViews(ctx);
+    // The knobs the seed names as the quality/performance trade-offs.
+    ctx.addQualityKnob({.cvar = "r.VXGI.MapSize", .values = {"64", "128"}, .label = "map"});
+    ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseCones", .values = {"4", "8", "16"}, .label = "cones"});
+    ctx.addQualityKnob({.cvar = "r.VXGI.TracingStep", .values = {"0.25", "0.5", "1"}, .label = "step"});
+    ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseSparsity", .values = {"1", "2", "4"}, .label = "sparse"});
+    ctx.addConsoleCommand({.name = "vxgi.Status",
+                           .help = "Prints the clip-map's format, placement and memory.",
+                           .run = [this](const std::vector<std::string>&) { return status(); }});
+    ctx.addPassHook({.name = "VXGI.Voxelization",
+                     .point = ExtensionPoint::AfterGBuffer,
+                     .setup = [this](RenderGraph& g, const FrameContext& f) { voxelization(g, f); }});
+    ctx.addPassHook({.name = "VXGI.Tracing",
+                     .point = ExtensionPoint::IndirectDiffuse,
+                     .setup = [this](RenderGraph& g, const FrameContext& f) { tracing(g, f); }});
+    ctx.addPassHook({.name = "VXGI.Debug",
+                     .point = ExtensionPoint::DebugView,
+                     .setup = [this](RenderGraph& g, const FrameContext& f) { debug(g, f); }});
+  }
+
+ private:
+  void declareDebugViews(PluginContext& ctx) {
+    const std::string off = "r.VXGI.DebugMode 0";
+    ctx.addDebugView({"VXGI: voxel opacity", "Ray-marched opacity voxels (r.VXGI.DebugLevel picks a level).",
+                      "r.VXGI.DebugMode 2", off});
+    ctx.addDebugView({"VXGI: voxel emittance", "Ray-marched emittance voxels: the light that bounces.",
+                      "r.VXGI.DebugMode 3", off});
+    ctx.addDebugView({"VXGI: indirect diffuse", "The indirect diffuse irradiance channel alone.",
+                      "r.VXGI.DebugMode 1", off});
+    ctx.addDebugView(
+        {"VXGI: indirect specular", "The indirect specular channel alone.", "r.VXGI.DebugMode 4", off});
+    ctx.addDebugView({"VXGI: ambient occlusion", "The voxel ambient occlusion channel (AO mode).",
+                      "r.VXGI.DebugMode 5", off});
+  }
+
+  // Everything besides placement that changes what the voxels hold.
+  std::string settingsKey(const FrameContext& frame) const {
+    std::string key = fmt::format("{}|{}", settings_.emittanceStorageScale.get(),
+                                  frame.setting(settings_.emittanceAmbient));
+    for (const Material& m : frame.scene.materials())
+      key += fmt::format("|{}{}{}{}", settings_.voxelize.of(m), settings_.thickness.of(m),
+                         settings_.proportional.of(m), settings_.omniDirectional.of(m));
+    for (const Light& l : frame.scene.lights()) key += settings_.indirectLighting.of(l) ? "L" : "l";
+    return key;
+  }
+
+  void voxelization(RenderGraph& graph, const FrameContext& frame) {
+    frame_.reset();
+    ClipMapFormat format = settings_.format();
+    if (std::string error = validate(format); !error.empty()) {
+      log::warn("VXGI: {}; keeping the previous clip-map", error);
+      format = textures_.format();
+    }
+    if (textures_.configure(format)) update_.invalidate();
+    const float requested = settings_.voxelSize.get();
+    const float voxelSize =
+        requested > 0.0f ? requested : automaticVoxelSize(frame.scene.bounds(), format.mapSize);
+    const ClipMapLayout layout = ClipMapLayout::place(format, voxelSize, settings_.anchor(frame));
+
+    Frame f;
+    f.format = format;
+    f.handles = textures_.import(graph);
+    for (const Material& m : frame.scene.materials()) {
+      if (!settings_.voxelize.of(m)) continue;
+      f.anyVoxelized = true;
+      // Specular cones only where a surface can show them: a specular or metallic
+      // material smooth enough to pass the threshold.
+      if ((m.specularFactor > 0.0f || m.metallicFactor > 0.0f) &&
+          m.roughnessFactor < settings_.specularRoughnessThreshold.get())
+        f.anySpecular = true;
+    }
+    const float decode = format.emittanceFp16 ? 1.0f : 1.0f / settings_.emittanceStorageScale.get();
+    addConstantsPass(graph, f.handles, makeConstants(layout, decode));
+    VoxelizationPlan plan = update_.plan(frame.scene, layout, settingsKey(frame));
+    if (!f.anyVoxelized) {
+      for (auto& boxes : plan.boxes) boxes.clear();
+      plan.reason = "no material is used with VXGI voxelization";
+    }
+    auto committed = std::make_shared<VoxelizationPlan>(plan);
+    addVoxelizationPasses(graph, frame, settings_, f.handles, plan,
+                          [this, committed] { update_.commit(*committed); });
+    lastPlanReason_ = plan.reason;
+    lastLayout_ = layout;
+    frame_ = std::move(f);
+  }
+
+  void tracing(RenderGraph& graph, const FrameContext& frame) {
+    if (!frame_) return;
+    addTracingPasses(graph, frame, settings_, frame_->handles, frame_->format, frame_->anyVoxelized,
+                     frame_->anySpecular);
+  }
+
+  void debug(RenderGraph& graph, const FrameContext& frame) {
+    if (!frame_) return;
+    addDebugPasses(graph, frame, settings_, frame_->handles, frame_->format);
+  }
+
+  ConsoleResult status() const {
+    const ClipMapFormat& f = textures_.format();
+    std::vector<std::string> lines{
+        fmt::format("clip-map {}³ × {} levels, {} directions, emittance {}{}", f.mapSize, f.stackLevels,
+                    f.directionCount(), f.emittanceFp16 ? "RGBA16F" : "RGBA8",
+                    f.ambientOcclusionMode ? " (ambient-occlusion mode: none)" : ""),
+        fmt::format("{} B per voxel, {:.1f} MiB ({:.1f} MiB levels + {:.1f} MiB mips)", f.bytesPerVoxel(),
+                    double(f.bytes()) / 1048576.0, double(f.clipBytes()) / 1048576.0,
+                    double(f.mipBytes()) / 1048576.0),
+        fmt::format("last update: {}", lastPlanReason_)};
+    if (lastLayout_)
+      for (size_t l = 0; l < lastLayout_->levels().size(); ++l) {
+        const LevelPlacement& p = lastLayout_->levels()[l];
+        lines.push_back(fmt::format("level {}: voxel {:.4f} m, origin ({}, {}, {})", l, p.voxelSize,
+                                    p.origin.x, p.origin.y, p.origin.z));
+      }
+    return ConsoleResult{true, lines};
+  }
+
+  struct Frame {
+    ClipMapFormat format;
+    ClipMapHandles handles;
+    bool anyVoxelized = false;
+    bool anySpecular = false;
+  };
+
+  VxgiSettings settings_;
+  ClipMapTextures textures_;
+  ClipMapUpdate update_;
+  std::optional<Frame> frame_;
+  std::optional<ClipMapLayout> lastLayout_;
+  std::string lastPlanReason_ = "not rendered yet";
+};
+
+}  // namespace bounce::vxgi
+
+BOUNCE_IMPLEMENT_PLUGIN(bounce::vxgi::VxgiPlugin)

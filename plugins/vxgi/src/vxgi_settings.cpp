@@ -1,0 +1,283 @@
+#include "vxgi_settings.h"
+
+#include <fmt/format.h>
+
+#include <bit>
+#include <cmath>
+#include <sstream>
+
+namespace bounce::vxgi {
+
+namespace {
+
+std::optional<glm::vec3> parseVec3(const std::string& text) {
+  std::string s = text;
+  for (char& c : s)
+    if (c == ',') c = ' ';
+  std::istringstream in(s);
+  glm::vec3 v;
+  if (!(in >> v.x >> v.y >> v.z)) return std::nullopt;
+  std::string rest;
+  if (in >> rest) return std::nullopt;
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return std::nullopt;
+  return v;
+}
+
+}  // namespace
+
+void VxgiSettings::declare(PluginContext& ctx) {
+  const std::string clip = "VXGI|Clip-map", tracing = "VXGI|Tracing", debug = "VXGI|Debug";
+  mapSize = ctx.addCVar<int32_t>(
+      {.name = "r.VXGI.MapSize",
+       .defaultValue = 128,
+       .help = "Voxels per side of each clip-map level (power of two, 32..256). Rebuilds the clip-map.",
+       .allowed = {32, 64, 128, 256},
+       .ini = {"VXGI", "VxgiMapSize"},
+       .category = clip});
+  stackLevels =
+      ctx.addCVar<int32_t>({.name = "r.VXGI.StackLevels",
+                            .defaultValue = 5,
+                            .help = "Clipped levels, each twice the extent of the one below (3..5).",
+                            .min = 3,
+                            .max = 5,
+                            .ini = {"VXGI", "VxgiStackLevels"},
+                            .category = clip});
+  sixDirections = ctx.addCVar<bool>(
+      {.name = "r.VXGI.OpacityDirectionCount6D",
+       .defaultValue = true,
+       .help = "Store opacity and emittance for 6 signed directions (thin walls block light from one side "
+               "only) instead of 3 axes.",
+       .ini = {"VXGI", "bVxgiOpacityDirectionCount6D"},
+       .category = clip});
+  ambientOcclusionMode = ctx.addCVar<bool>(
+      {.name = "r.VXGI.AmbientOcclusionMode",
+       .defaultValue = false,
+       .help =
+           "Opacity only: no emittance textures or voxelization; diffuse tracing returns ambient occlusion.",
+       .ini = {"VXGI", "bVxgiAmbientOcclusionMode"},
+       .category = clip});
+  emittanceFp16 = ctx.addCVar<bool>({.name = "r.VXGI.StoreEmittanceInFP16",
+                                     .defaultValue = false,
+                                     .help = "RGBA16F emittance (HDR) instead of RGBA8 × storage scale.",
+                                     .ini = {"VXGI", "bVxgiStoreEmittanceInFP16"},
+                                     .category = clip});
+  emittanceStorageScale = ctx.addCVar<float>(
+      {.name = "r.VXGI.EmittanceStorageScale",
+       .defaultValue = 1.0f,
+       .help = "RGBA8 emittance stores radiance × this, so it saturates at radiance 1/scale W/(m²·sr).",
+       .min = 1e-4,
+       .max = 1e4,
+       .outOfRange = RangePolicy::Clamp,
+       .ini = {"VXGI", "VxgiEmittanceStorageScale"},
+       .category = clip});
+  voxelSize = ctx.addCVar<float>(
+      {.name = "r.VXGI.VoxelSize",
+       .defaultValue = 0.0f,
+       .help = "Edge of a finest-level voxel in metres; 0 picks it from the scene so level 1 covers it all.",
+       .min = 0.0,
+       .max = 1e4,
+       .ini = {"VXGI", "VxgiVoxelSize"},
+       .category = clip});
+  anchorMode = ctx.addCVar<int32_t>(
+      {.name = "r.VXGI.AnchorMode",
+       .defaultValue = 0,
+       .help =
+           "What the clip-map centres on: Camera (clamped into the scene's bounds), SceneCenter, or Fixed "
+           "(r.VXGI.AnchorPosition).",
+       .enumNames = {"Camera", "SceneCenter", "Fixed"},
+       .category = clip});
+  anchorPosition = ctx.addCVar<std::string>(
+      {.name = "r.VXGI.AnchorPosition",
+       .defaultValue = "0 0 0",
+       .help = "World position \"x y z\" (metres) the clip-map centres on when r.VXGI.AnchorMode is Fixed.",
+       .category = clip,
+       .validate = [](const std::string& v) -> std::string {
+         return parseVec3(v) ? "" : fmt::format("'{}' is not three finite numbers \"x y z\"", v);
+       }});
+  emittanceAmbient = ctx.addCVar<float>(
+      {.name = "r.VXGI.EmittanceAmbient",
+       .defaultValue = 0.0f,
+       .help = "Constant irradiance (W/m²) added to every voxelized surface's lighting: lets single-bounce "
+               "specular see surfaces no flagged light reaches (the seed's remedy).",
+       .min = 0.0,
+       .max = 1e4,
+       .outOfRange = RangePolicy::Clamp,
+       .category = clip});
+
+  diffuseEnable = ctx.addCVar<bool>({.name = "r.VXGI.DiffuseTracingEnable",
+                                     .defaultValue = true,
+                                     .help = "Trace indirect diffuse light (added to the HDR lighting).",
+                                     .category = tracing});
+  specularEnable = ctx.addCVar<bool>({.name = "r.VXGI.SpecularTracingEnable",
+                                      .defaultValue = true,
+                                      .help = "Trace indirect specular light (its own channel).",
+                                      .category = tracing});
+  diffuseCones =
+      ctx.addCVar<int32_t>({.name = "r.VXGI.DiffuseCones",
+                            .defaultValue = 8,
+                            .help = "Diffuse cones per traced pixel (4, 8 or 16 as in the seed; 1..32).",
+                            .min = 1,
+                            .max = 32,
+                            .outOfRange = RangePolicy::Clamp,
+                            .postProcess = "VxgiDiffuseCones",
+                            .category = tracing});
+  diffuseSparsity = ctx.addCVar<int32_t>({.name = "r.VXGI.DiffuseSparsity",
+                                          .defaultValue = 1,
+                                          .help = "Sparse diffuse tracing: trace every k-th pixel in x and "
+                                                  "y, then interpolate edge-aware (1, 2, 4).",
+                                          .allowed = {1, 2, 4},
+                                          .postProcess = "VxgiDiffuseSparsity",
+                                          .category = tracing});
+  diffuseIntensity = ctx.addCVar<float>({.name = "r.VXGI.DiffuseIntensity",
+                                         .defaultValue = 1.0f,
+                                         .help = "Scale of the indirect diffuse channel (1 = physical).",
+                                         .min = 0.0,
+                                         .max = 100.0,
+                                         .outOfRange = RangePolicy::Clamp,
+                                         .postProcess = "VxgiDiffuseIntensity",
+                                         .category = tracing});
+  specularIntensity = ctx.addCVar<float>({.name = "r.VXGI.SpecularIntensity",
+                                          .defaultValue = 1.0f,
+                                          .help = "Scale of the indirect specular channel (1 = physical).",
+                                          .min = 0.0,
+                                          .max = 100.0,
+                                          .outOfRange = RangePolicy::Clamp,
+                                          .postProcess = "VxgiSpecularIntensity",
+                                          .category = tracing});
+  tracingStep = ctx.addCVar<float>(
+      {.name = "r.VXGI.TracingStep",
+       .defaultValue = 0.5f,
+       .help = "Cone step as a fraction of the cone's footprint (smaller: slower, fewer skipped thin walls).",
+       .min = 0.1,
+       .max = 1.0,
+       .outOfRange = RangePolicy::Clamp,
+       .postProcess = "VxgiTracingStep",
+       .category = tracing});
+  maxDistance = ctx.addCVar<float>({.name = "r.VXGI.MaxDistance",
+                                    .defaultValue = 1000.0f,
+                                    .help = "Metres a cone travels at most.",
+                                    .min = 0.0,
+                                    .max = 1e6,
+                                    .outOfRange = RangePolicy::Clamp,
+                                    .postProcess = "VxgiTracingRange",
+                                    .category = tracing});
+  normalOffset = ctx.addCVar<float>(
+      {.name = "r.VXGI.NormalOffset",
+       .defaultValue = 1.0f,
+       .help = "Cones start this many voxels off the surface along its normal (less: more self-occlusion; "
+               "more: more leaking through thin walls).",
+       .min = 0.0,
+       .max = 8.0,
+       .outOfRange = RangePolicy::Clamp,
+       .category = tracing});
+  ambientRange =
+      ctx.addCVar<float>({.name = "r.VXGI.AmbientRange",
+                          .defaultValue = 1.0f,
+                          .help = "Metres within which occlusion counts in ambient-occlusion mode.",
+                          .min = 0.0,
+                          .max = 1e6,
+                          .outOfRange = RangePolicy::Clamp,
+                          .postProcess = "VxgiAmbientRange",
+                          .category = tracing});
+  specularRoughnessThreshold =
+      ctx.addCVar<float>({.name = "r.VXGI.SpecularRoughnessThreshold",
+                          .defaultValue = 0.6f,
+                          .help = "Pixels at or above this perceptual roughness trace no specular cone.",
+                          .min = 0.0,
+                          .max = 1.0,
+                          .outOfRange = RangePolicy::Clamp,
+                          .category = tracing});
+  specularMinConeFactor = ctx.addCVar<float>(
+      {.name = "r.VXGI.SpecularMinConeFactor",
+       .defaultValue = 0.1f,
+       .help = "Narrowest specular cone (diameter per metre): voxels cannot resolve sharper reflections.",
+       .min = 0.01,
+       .max = 2.0,
+       .outOfRange = RangePolicy::Clamp,
+       .category = tracing});
+
+  debugMode = ctx.addCVar<int32_t>(
+      {.name = "r.VXGI.DebugMode",
+       .defaultValue = 0,
+       .help = "0 regular shading, 1 indirect diffuse alone, 2 voxel opacity, 3 voxel emittance, 4 indirect "
+               "specular alone, 5 ambient occlusion alone.",
+       .aliases = {"r.VXGIDebugMode"},
+       .min = 0,
+       .max = 5,
+       .category = debug});
+  debugLevel =
+      ctx.addCVar<int32_t>({.name = "r.VXGI.DebugLevel",
+                            .defaultValue = -1,
+                            .help = "Clip-map level the voxel views show; -1 the finest at each point.",
+                            .min = -1,
+                            .max = 4,
+                            .category = debug});
+  debugExposure = ctx.addCVar<float>({.name = "r.VXGI.DebugExposure",
+                                      .defaultValue = 1.0f,
+                                      .help = "Multiplier on radiance in the emittance and channel views.",
+                                      .min = 0.0,
+                                      .max = 1e6,
+                                      .outOfRange = RangePolicy::Clamp,
+                                      .category = debug});
+
+  voxelize = ctx.addMaterialParameter<bool>(
+      {.name = "UsedWithVxgiVoxelization",
+       .displayName = "Used with VXGI voxelization",
+       .help = "Voxelize surfaces with this material: they block, reflect and emit indirect light.",
+       .defaultValue = false,
+       .category = "VXGI"});
+  thickness = ctx.addMaterialParameter<float>(
+      {.name = "VxgiVoxelizationThickness",
+       .displayName = "Vxgi voxelization thickness",
+       .help = "Voxels of opacity a surface fills behind itself (1: just the surface).",
+       .defaultValue = 1.0f,
+       .min = 1.0,
+       .max = 4.0,
+       .category = "VXGI"});
+  proportional = ctx.addMaterialParameter<bool>(
+      {.name = "VxgiProportionalEmittance",
+       .displayName = "Vxgi proportional emittance",
+       .help = "Emittance proportional to how much of a voxel the surface covers (off: a voxel it touches "
+               "emits its full radiance, brighter small objects).",
+       .defaultValue = true,
+       .category = "VXGI"});
+  omniDirectional = ctx.addMaterialParameter<bool>(
+      {.name = "VxgiOmniDirectional",
+       .displayName = "Vxgi omni directional",
+       .help = "The surface's voxels emit its radiance in every direction, not just the way it faces.",
+       .defaultValue = false,
+       .category = "VXGI"});
+  indirectLighting = ctx.addLightParameter<bool>(
+      {.name = "VxgiIndirectLighting",
+       .displayName = "VXGI indirect lighting",
+       .help = "This light's light on voxelized surfaces is voxelized as emittance (it bounces).",
+       .defaultValue = false,
+       .category = "VXGI"});
+}
+
+ClipMapFormat VxgiSettings::format() const {
+  ClipMapFormat f;
+  f.mapSize = uint32_t(mapSize.get());
+  f.stackLevels = uint32_t(stackLevels.get());
+  f.sixDirections = sixDirections.get();
+  f.emittanceFp16 = emittanceFp16.get();
+  f.ambientOcclusionMode = ambientOcclusionMode.get();
+  return f;
+}
+
+glm::vec3 VxgiSettings::anchor(const FrameContext& frame) const {
+  const Aabb bounds = frame.scene.bounds();
+  switch (AnchorMode(anchorMode.get())) {
+    case AnchorMode::SceneCenter:
+      return bounds.center();
+    case AnchorMode::Fixed:
+      return parseVec3(anchorPosition.get()).value_or(glm::vec3(0.0f));
+    case AnchorMode::Camera:
+    default:
+      // Detail around the viewer, but no voxels spent on empty space when the camera
+      // stands outside the scene (the usual Cornell-box view).
+      return bounds.empty() ? frame.view.position : glm::clamp(frame.view.position, bounds.min, bounds.max);
+  }
+}
+
+}  // namespace bounce::vxgi

@@ -1,0 +1,115 @@
+// The clip-map's geometry and storage on the CPU: memory against the seed's formula and
+// range, level placement and nesting, toroidal slab updates.
+
+#include "clip_map_layout.h"
+#include "clip_map_update.h"
+
+#include <gtest/gtest.h>
+
+namespace bounce::vxgi {
+namespace {
+
+TEST(ClipMapFormat, MemoryMatchesTheSeedsRange) {
+  // Seed 001, slide 12: 32³ × 3 levels at 16 B/voxel = 1.5 MB … 256³ × 5 at 56 B ≈ 4.5 GB.
+  ClipMapFormat small{.mapSize = 32, .stackLevels = 3, .sixDirections = false, .emittanceFp16 = false};
+  EXPECT_EQ(small.bytesPerVoxel(), 16u);
+  EXPECT_EQ(small.clipBytes(), 3ull * 32 * 32 * 32 * 16);
+  EXPECT_NEAR(double(small.clipBytes()) / (1024.0 * 1024.0), 1.5, 1e-9);
+  ClipMapFormat large{.mapSize = 256, .stackLevels = 5, .sixDirections = true, .emittanceFp16 = true};
+  EXPECT_EQ(large.bytesPerVoxel(), 56u);
+  EXPECT_NEAR(double(large.clipBytes()) / 1e9, 4.70, 0.01);  // 4.375 GiB: "≈ 4.5 GB"
+  // Mips: size/2 … 1, an eighth of the voxels per step.
+  uint64_t mipVoxels = 0;
+  for (uint32_t s = 128; s >= 1; s /= 2) mipVoxels += uint64_t(s) * s * s;
+  EXPECT_EQ(large.mipBytes(), mipVoxels * 56);
+  EXPECT_EQ(large.mipCount(), 8u);
+  EXPECT_EQ(large.bytes(), large.clipBytes() + large.mipBytes());
+}
+
+TEST(ClipMapFormat, AmbientOcclusionModeStoresNoEmittance) {
+  ClipMapFormat f{.mapSize = 64, .stackLevels = 3, .sixDirections = true, .ambientOcclusionMode = true};
+  EXPECT_EQ(f.emittanceTextureCount(), 0u);
+  EXPECT_EQ(f.bytesPerVoxel(), 8u);
+}
+
+TEST(ClipMapFormat, ValidationNamesTheBadValue) {
+  EXPECT_EQ(validate({.mapSize = 128, .stackLevels = 5}), "");
+  EXPECT_NE(validate({.mapSize = 96, .stackLevels = 5}).find("96"), std::string::npos);
+  EXPECT_NE(validate({.mapSize = 512, .stackLevels = 5}).find("512"), std::string::npos);
+  EXPECT_NE(validate({.mapSize = 64, .stackLevels = 6}).find("6"), std::string::npos);
+}
+
+TEST(ClipMapLayout, LevelsDoubleAndNestWithMargin) {
+  ClipMapFormat f{.mapSize = 64, .stackLevels = 5};
+  ClipMapLayout layout = ClipMapLayout::place(f, 0.1f, {3.3f, -1.7f, 0.2f});
+  for (uint32_t l = 0; l < 5; ++l) {
+    EXPECT_FLOAT_EQ(layout.levels()[l].voxelSize, 0.1f * float(1 << l));
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(layout.levels()[l].origin[i] % 2, 0) << "level " << l;
+    if (l == 0) continue;
+    const VoxelBox inner = layout.innerBox(l), whole = layout.levelBox(l);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_GE(inner.min[i] - whole.min[i], 16) << "level " << l;  // at least size/4 margin
+      EXPECT_GE(whole.max[i] - inner.max[i], 15) << "level " << l;
+    }
+  }
+  // The anchor sits inside the finest level.
+  const Aabb b0 = layout.levels()[0].bounds(64);
+  EXPECT_TRUE(b0.overlaps(Aabb{{3.3f, -1.7f, 0.2f}, {3.3f, -1.7f, 0.2f}}));
+}
+
+TEST(ClipMapLayout, NonFiniteAnchorStillPlacesLevels) {
+  ClipMapLayout layout =
+      ClipMapLayout::place({.mapSize = 32, .stackLevels = 3}, 0.5f, {std::nanf(""), 1e30f, -1e30f});
+  EXPECT_EQ(layout.levels().size(), 3u);
+}
+
+TEST(NewlyCovered, AStillLevelNeedsNothing) {
+  VoxelBox box{{0, 0, 0}, {64, 64, 64}};
+  EXPECT_TRUE(newlyCovered(box, box).empty());
+}
+
+TEST(NewlyCovered, MovingByTwoVoxelsUncoversTwoVoxelSlabs) {
+  VoxelBox before{{0, 0, 0}, {64, 64, 64}}, now{{2, 0, -2}, {66, 64, 62}};
+  std::vector<VoxelBox> slabs = newlyCovered(before, now);
+  uint64_t voxels = 0;
+  for (const VoxelBox& s : slabs) voxels += s.volume();
+  // x: a 2×64×64 slab; z: a 62×64×2 slab (the corner counted once).
+  EXPECT_EQ(voxels, 2ull * 64 * 64 + 62ull * 64 * 2);
+  for (const VoxelBox& s : slabs) EXPECT_TRUE(intersect(s, before).empty());
+}
+
+TEST(NewlyCovered, AJumpFurtherThanTheLevelRedoesItAll) {
+  VoxelBox before{{0, 0, 0}, {32, 32, 32}}, now{{100, 0, 0}, {132, 32, 32}};
+  ASSERT_EQ(newlyCovered(before, now).size(), 1u);
+  EXPECT_EQ(newlyCovered(before, now)[0], now);
+}
+
+TEST(ClipMapUpdate, StaticSceneAndStillCameraVoxelizeNothing) {
+  Scene scene;
+  ClipMapLayout layout = ClipMapLayout::place({.mapSize = 32, .stackLevels = 3}, 0.1f, {0, 0, 0});
+  ClipMapUpdate update;
+  VoxelizationPlan first = update.plan(scene, layout, "k");
+  EXPECT_EQ(first.voxels(), 3ull * 32 * 32 * 32);
+  update.commit(first);
+  VoxelizationPlan second = update.plan(scene, layout, "k");
+  EXPECT_TRUE(second.empty()) << second.reason;
+  EXPECT_EQ(second.reason, "clip-map up to date");
+  // A setting that changes voxel contents redoes everything.
+  EXPECT_EQ(update.plan(scene, layout, "other").voxels(), 3ull * 32 * 32 * 32);
+}
+
+TEST(ClipMapUpdate, SubVoxelCameraMovesVoxelizeNothing) {
+  Scene scene;
+  ClipMapFormat f{.mapSize = 32, .stackLevels = 3};
+  ClipMapUpdate update;
+  update.commit(update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.0f, 0.0f, 0.0f}), "k"));
+  // Origins snap to two voxels: moving a quarter voxel changes nothing.
+  EXPECT_TRUE(update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.025f, 0.0f, 0.0f}), "k").empty());
+  // Moving four voxels uncovers slabs in each level, not whole levels.
+  VoxelizationPlan moved = update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.4f, 0.0f, 0.0f}), "k");
+  EXPECT_FALSE(moved.empty());
+  EXPECT_LT(moved.voxels(), 32ull * 32 * 32 / 4);
+}
+
+}  // namespace
+}  // namespace bounce::vxgi

@@ -1,0 +1,244 @@
+// bounce-viewer in a real window (a private Xvfb when no display is set) on the Vulkan
+// device the tests use, with validation on. One scripted session switches debug views,
+// toggles the UI and types bad console lines; each test checks one behaviour of it.
+
+#include "bounce/image/image_buffer.h"
+#include "support/x_display.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <sys/wait.h>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace bounce {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status = -1;
+  std::string output;
+};
+
+fs::path scratchDir() {
+  // One folder per test process: ctest runs the tests in parallel processes, each with
+  // its own scripted session and screenshots.
+  fs::path dir = fs::path(BOUNCE_BINARY_DIR) / "viewer-test" / std::to_string(::getpid());
+  fs::create_directories(dir / "runtime");
+  fs::permissions(dir / "runtime", fs::perms::owner_all, fs::perm_options::replace);
+  return dir;
+}
+
+/// Runs bounce-viewer with validation, no user ini and the build's shader cache.
+CommandResult runViewer(const std::string& args) {
+  const fs::path dir = scratchDir();
+  const std::string cmd =
+      std::string("cd ") + BOUNCE_SOURCE_DIR + " && XDG_RUNTIME_DIR=" + (dir / "runtime").string() +
+      " BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
+      "/shader-cache timeout 300 " + BOUNCE_BINARY_DIR + "/bin/bounce-viewer " + args + " 2>&1";
+  CommandResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buffer;
+  while (fgets(buffer.data(), int(buffer.size()), p)) r.output += buffer.data();
+  const int status = pclose(p);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+/// Mean over pixels and RGB of |a - b| (0..1); NaN when the sizes differ.
+double meanDifference(const ImageBuffer& a, const ImageBuffer& b) {
+  if (a.width != b.width || a.height != b.height || a.empty()) return NAN;
+  double sum = 0.0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x)
+      sum += glm::dot(glm::abs(a.rgb(x, y) - b.rgb(x, y)), glm::vec3(1.0f));
+  return sum / (3.0 * a.width * a.height);
+}
+
+/// Fraction of pixels whose RGB differs by more than `threshold` in some channel.
+double changedFraction(const ImageBuffer& a, const ImageBuffer& b, float threshold = 0.05f) {
+  size_t changed = 0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x) {
+      const glm::vec3 d = glm::abs(a.rgb(x, y) - b.rgb(x, y));
+      changed += std::max({d.x, d.y, d.z}) > threshold ? 1 : 0;
+    }
+  return double(changed) / (double(a.width) * a.height);
+}
+
+class ViewerWindowTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // Started here rather than at static initialisation, so listing the tests (ctest's
+    // discovery) never starts an X server.
+    display_ = std::make_unique<test::XDisplay>();
+    if (!display_->available()) return;
+    dir_ = scratchDir();
+    for (const char* name :
+         {"regular.png", "regular.exr", "ambient.png", "ambient-by-name.png", "ui.png", "after-errors.png"})
+      fs::remove(dir_ / name);
+    const fs::path script = dir_ / "session.txt";
+    std::ofstream(script) << "# regular shading without the UI\n"
+                             "ui off\n"
+                             "frames 2\n"
+                             "screenshot "
+                          << (dir_ / "regular.png").string()
+                          << "\n"
+                             "# the Ambient plugin's debug view, as typed in the console\n"
+                             "r.Ambient.DebugMode 1\n"
+                             "frames 1\n"
+                             "screenshot "
+                          << (dir_ / "ambient.png").string()
+                          << "\n"
+                             "r.Ambient.DebugMode 0\n"
+                             "# the same view through the viewer's debug-view selector\n"
+                             "debugview Ambient: irradiance\n"
+                             "screenshot "
+                          << (dir_ / "ambient-by-name.png").string()
+                          << "\n"
+                             "debugview off\n"
+                             "ui on\n"
+                             "frames 2\n"
+                             "screenshot "
+                          << (dir_ / "ui.png").string()
+                          << "\n"
+                             "# bad lines: reported, and the script goes on\n"
+                             "r.NoSuchVariable 3\n"
+                             "r.Ambient.DebugMode banana\n"
+                             "this is not a command\n"
+                             "ui off\n"
+                             "frames 1\n"
+                             "screenshot "
+                          << (dir_ / "after-errors.png").string()
+                          << "\n"
+                             "quit\n";
+    session_ = runViewer("--scene content/cornell_box.gltf --gi Ambient --width 320 --height 240 --script " +
+                         script.string());
+  }
+  static void TearDownTestSuite() { display_.reset(); }
+
+  void SetUp() override {
+    if (!display_->available()) GTEST_SKIP() << display_->reason();
+  }
+
+  static ImageBuffer screenshot(const std::string& name) {
+    ImageBuffer image;
+    std::string error;
+    EXPECT_TRUE(readPng((dir_ / name).string(), image, &error)) << error << "\n" << session_.output;
+    return image;
+  }
+
+  static std::unique_ptr<test::XDisplay> display_;
+  static fs::path dir_;
+  static CommandResult session_;
+};
+
+std::unique_ptr<test::XDisplay> ViewerWindowTest::display_;
+fs::path ViewerWindowTest::dir_;
+CommandResult ViewerWindowTest::session_;
+
+TEST_F(ViewerWindowTest, OpensTheWindowAndExitsCleanlyWithoutValidationErrors) {
+  // Exit status 3 would mean Vulkan validation errors; 0 is a clean `quit`.
+  EXPECT_EQ(session_.status, 0) << session_.output;
+  EXPECT_NE(session_.output.find("window opened, 320x240"), std::string::npos) << session_.output;
+}
+
+TEST_F(ViewerWindowTest, ScreenshotsHaveTheWindowSize) {
+  for (const char* name :
+       {"regular.png", "ambient.png", "ambient-by-name.png", "ui.png", "after-errors.png"}) {
+    ImageBuffer image = screenshot(name);
+    EXPECT_EQ(image.width, 320u) << name;
+    EXPECT_EQ(image.height, 240u) << name;
+  }
+  ImageBuffer hdr;
+  std::string error;
+  ASSERT_TRUE(readExr((dir_ / "regular.exr").string(), hdr, &error)) << error;
+  EXPECT_EQ(hdr.width, 320u);
+  EXPECT_EQ(hdr.height, 240u);
+  EXPECT_EQ(hdr.nonFiniteCount(), 0u);
+}
+
+TEST_F(ViewerWindowTest, AmbientDebugViewDiffersFromRegularShading) {
+  const ImageBuffer regular = screenshot("regular.png"), ambient = screenshot("ambient.png");
+  // The irradiance view replaces the shaded image over most of the window.
+  EXPECT_GT(changedFraction(regular, ambient), 0.3) << session_.output;
+  EXPECT_GT(meanDifference(regular, ambient), 0.05);
+  // The view shows the ambient irradiance itself: r.Ambient.Intensity, 0.25 W/m² by
+  // default, on every surface the regular image shows (all materials receive it), where
+  // the shaded image varies with lights, shadows and albedo.
+  size_t surfaces = 0, atIntensity = 0;
+  for (uint32_t y = 0; y < regular.height; ++y)
+    for (uint32_t x = 0; x < regular.width; ++x) {
+      const glm::vec3 shaded = regular.rgb(x, y);
+      if (std::max({shaded.x, shaded.y, shaded.z}) < 0.02f) continue;  // background
+      ++surfaces;
+      const glm::vec3 e = ambient.rgb(x, y);
+      atIntensity +=
+          std::abs(e.x - 0.25f) < 0.01f && std::abs(e.y - 0.25f) < 0.01f && std::abs(e.z - 0.25f) < 0.01f;
+    }
+  ASSERT_GT(surfaces, 320u * 240u / 2);
+  EXPECT_GT(double(atIntensity) / double(surfaces), 0.98);
+  // The selector enters the same view as the console line.
+  EXPECT_LT(meanDifference(ambient, screenshot("ambient-by-name.png")), 0.002);
+}
+
+TEST_F(ViewerWindowTest, TheImGuiLayerDraws) {
+  const ImageBuffer regular = screenshot("regular.png"), ui = screenshot("ui.png");
+  const ImageBuffer after = screenshot("after-errors.png");
+  // Same view, same camera, UI off both times: the frames agree...
+  EXPECT_LT(meanDifference(regular, after), 0.002);
+  // ...so what differs with the UI on is the UI: panels and the menu bar.
+  EXPECT_GT(changedFraction(regular, ui), 0.05);
+}
+
+TEST_F(ViewerWindowTest, BadConsoleLinesAreReportedAndTheScriptGoesOn) {
+  EXPECT_EQ(session_.status, 0) << session_.output;
+  EXPECT_NE(session_.output.find("unknown console variable or command 'r.NoSuchVariable'"), std::string::npos)
+      << session_.output;
+  EXPECT_NE(session_.output.find("session.txt:18"), std::string::npos) << "errors name the script line\n"
+                                                                       << session_.output;
+  EXPECT_NE(session_.output.find("unknown console variable or command 'this'"), std::string::npos)
+      << session_.output;
+  // The screenshot after the bad lines exists: the viewer kept running the script.
+  EXPECT_TRUE(fs::exists(dir_ / "after-errors.png")) << session_.output;
+}
+
+// Bad input stops before any window opens: no X server needed.
+struct BadInput {
+  const char* name;
+  const char* args;
+  const char* message;
+};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+
+class ViewerBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(ViewerBadInput, ExitsWithStatusTwoAndOneClearLine) {
+  CommandResult r = runViewer(GetParam().args);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(GetParam().message), std::string::npos) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Viewer, ViewerBadInput,
+    ::testing::Values(BadInput{"MissingScene", "--scene content/no_such_scene.gltf", "no_such_scene.gltf"},
+                      BadInput{"MissingScript", "--script /nonexistent/script.txt",
+                               "--script /nonexistent/script.txt"},
+                      BadInput{"UnknownCvar", "--set r.NoSuchThing=1", "r.NoSuchThing"},
+                      BadInput{"BadOption", "--frobnicate", "frobnicate"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace bounce
