@@ -1,8 +1,9 @@
 // The device layer on its own: memory, buffers, images with mips and layers, compute
 // pipelines with reflection-driven binding, read-back, and the validation counter.
 
-#include "bounce/gpu/buffer.h"
 #include "bounce/gpu/device.h"
+#include "bounce/gpu/barriers.h"
+#include "bounce/gpu/buffer.h"
 #include "bounce/gpu/image.h"
 #include "bounce/gpu/pipeline.h"
 
@@ -16,7 +17,7 @@ namespace bounce::gpu {
 namespace {
 
 class DeviceTest : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     std::string error;
     device = Device::create({.validation = true}, &error);
@@ -39,7 +40,8 @@ TEST_F(DeviceTest, PicksAUsableDeviceAndNamesIt) {
   EXPECT_FALSE(device->name().empty());
   EXPECT_GT(device->timestampPeriod(), 0.0);
   EXPECT_NE(device->cmdPushDescriptorSet, nullptr);
-  for (int k = 0; k < int(SamplerKind::Count); ++k) EXPECT_NE(device->sampler(SamplerKind(k)), VK_NULL_HANDLE);
+  for (int k = 0; k < int(SamplerKind::Count); ++k)
+    EXPECT_NE(device->sampler(SamplerKind(k)), VK_NULL_HANDLE);
 }
 
 TEST_F(DeviceTest, UnknownDeviceNameIsAClearError) {
@@ -64,8 +66,10 @@ TEST_F(DeviceTest, BufferUploadAndReadBack) {
 }
 
 TEST_F(DeviceTest, ThreeDimensionalImageRoundTrip) {
-  TextureDesc d{.type = TextureType::Tex3D, .format = VK_FORMAT_R8G8B8A8_UNORM, .width = 8, .height = 4, .depth = 2};
-  Image image(*device, d, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  TextureDesc d{
+      .type = TextureType::Tex3D, .format = VK_FORMAT_R8G8B8A8_UNORM, .width = 8, .height = 4, .depth = 2};
+  Image image(*device, d,
+              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
   std::vector<uint8_t> texels(8 * 4 * 2 * 4);
   for (size_t i = 0; i < texels.size(); ++i) texels[i] = uint8_t(i * 13);
   uploadImage(*device, image, texels.data(), texels.size(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
@@ -74,7 +78,8 @@ TEST_F(DeviceTest, ThreeDimensionalImageRoundTrip) {
 
 TEST_F(DeviceTest, GeneratedMipsAverageTheLevelAbove) {
   TextureDesc d{.format = VK_FORMAT_R8G8B8A8_UNORM, .width = 4, .height = 4, .mips = 3};
-  Image image(*device, d, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  Image image(*device, d,
+              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
   // A checkerboard of 0 and 200: every coarser mip is its average, 100.
   std::vector<uint8_t> texels(4 * 4 * 4);
   for (uint32_t y = 0; y < 4; ++y)
@@ -120,22 +125,18 @@ TEST_F(DeviceTest, ComputePipelineBindsByNameAndPushesConstants) {
     dep.pImageMemoryBarriers = &b;
     vkCmdPipelineBarrier2(cmd, &dep);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.handle());
-    DescriptorWrites(p).storageImage("target", image.view()).buffer("Values", values.handle()).push(*device, cmd);
+    DescriptorWrites(p)
+        .storageImage("target", image.view())
+        .buffer("Values", values.handle())
+        .push(*device, cmd);
     struct {
       uint32_t w, h;
       float scale;
     } push{w, h, 0.25f};
     vkCmdPushConstants(cmd, p.layout(), p.stages(), 0, sizeof(push), &push);
     vkCmdDispatch(cmd, 2, 2, 1);
-    VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    mb.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    mb.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    mb.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    mb.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    VkDependencyInfo dep2{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep2.memoryBarrierCount = 1;
-    dep2.pMemoryBarriers = &mb;
-    vkCmdPipelineBarrier2(cmd, &dep2);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   });
   const auto* v = static_cast<const uint32_t*>(values.mapped());
   EXPECT_EQ(v[3 * w + 5], 3005u);
@@ -153,7 +154,8 @@ TEST_F(DeviceTest, BindingMistakesAreReportedByName) {
     DescriptorWrites(p).storageImage("targt", VK_NULL_HANDLE);
     FAIL() << "an unknown binding name must throw";
   } catch (const std::logic_error& e) {
-    EXPECT_NE(std::string(e.what()).find("no binding 'targt' (did you mean 'target'?)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no binding 'targt' (did you mean 'target'?)"), std::string::npos)
+        << e.what();
   }
   device->submitAndWait([&](VkCommandBuffer cmd) {
     try {

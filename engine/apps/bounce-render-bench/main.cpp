@@ -13,8 +13,8 @@
 
 #include "parse_arguments.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <map>
@@ -22,14 +22,15 @@
 int main(int argc, char** argv) {
   CLI::App app{"bounce-render-bench: per-pass GPU milliseconds at several sizes"};
   bounce::app::acceptUnrealSpellings(app);
-  std::string scenePath = "content/cornell_box.gltf", technique = "Ambient", deviceName;
+  std::string scenePath = "content/cornell_box.gltf", technique, deviceName;
   std::vector<uint32_t> sizes{256, 512};
   uint32_t frames = 10;
   std::vector<std::string> sets;
   app.add_option("--scene", scenePath, "glTF scene");
-  app.add_option("--gi", technique, "GI technique");
+  app.add_option("--gi", technique, "GI technique (default: r.GI.Technique from the ini files)");
   app.add_option("--sizes", sizes, "Square output sizes")->delimiter(',');
-  app.add_option("--frames", frames, "Frames per size (the first is not timed)")->check(CLI::Range(2u, 10000u));
+  app.add_option("--frames", frames, "Frames per size (the first is not timed)")
+      ->check(CLI::Range(2u, 10000u));
   app.add_option("--set", sets, "Console variable NAME=VALUE (repeatable)");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
   if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-render-bench")) return *status;
@@ -53,7 +54,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   bounce::Renderer renderer(engine, *device);
-  const bounce::Camera camera = engine.scene()->cameras().empty() ? bounce::Camera{} : engine.scene()->cameras()[0];
+  const bounce::Camera camera =
+      engine.scene()->cameras().empty() ? bounce::Camera{} : engine.scene()->cameras()[0];
 
   // pass → size → median ms
   std::vector<std::string> passes;
@@ -92,7 +94,8 @@ int main(int argc, char** argv) {
   fmt::print("{}\n{}\n", header, rule);
   auto row = [&](const std::string& name, const std::map<uint32_t, double>& values) {
     std::string line = fmt::format("| {:<22} |", name);
-    for (uint32_t s : sizes) line += values.count(s) ? fmt::format(" {:>9.3f} |", values.at(s)) : "         - |";
+    for (uint32_t s : sizes)
+      line += values.count(s) ? fmt::format(" {:>9.3f} |", values.at(s)) : "         - |";
     if (sizes.size() > 1) {
       double a = values.count(sizes.front()) ? values.at(sizes.front()) : 0.0;
       double b = values.count(sizes.back()) ? values.at(sizes.back()) : 0.0;

@@ -1,5 +1,6 @@
 #include "renderer/deferred_pipeline.h"
 
+#include "bounce/gpu/barriers.h"
 #include "bounce/gpu/image.h"
 #include "bounce/gpu/pass_context.h"
 #include "bounce/graph/channels.h"
@@ -278,14 +279,9 @@ void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) co
         bind.storage("target", out, mip);
         ctx.dispatchThreads(pipeline, bind, {e.width, e.height, 1}, p);
         // The next step samples what this one wrote.
-        VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        mb.srcStageMask = mb.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-        mb.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-        mb.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &mb;
-        vkCmdPipelineBarrier2(ctx.cmd(), &dep);
+        gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
       };
       const uint32_t mips = img.desc().mips;
       step(0, 0, gpu::Bindings().texture("source", hdr));
@@ -364,15 +360,8 @@ void DeferredPipeline::output(RenderGraph& g, const FrameContext& frame, const F
         copy.imageExtent = img.extent();
         vkCmdCopyImageToBuffer(ctx.cmd(), img.handle(), ctx.layout(src), target->buffer->handle(), 1, &copy);
         // Make the copy visible to the host once the frame's fence signals.
-        VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        mb.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
-        mb.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        mb.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-        mb.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &mb;
-        vkCmdPipelineBarrier2(ctx.cmd(), &dep);
+        gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         target->produced = true;
       };
     });

@@ -62,6 +62,13 @@ ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
   return h;
 }
 
+ClipMapHandles ClipMapTextures::readSampled(PassBuilder& b, ClipMapHandles h) {
+  h.constants = b.read(h.constants, Access::StorageRead);
+  for (auto* list : {&h.opacityClip, &h.emittanceClip, &h.opacityMip, &h.emittanceMip})
+    for (TextureHandle& t : *list) t = b.read(t, Access::Sampled);
+  return h;
+}
+
 void ClipMapTextures::bindSampled(gpu::Bindings& b, const ClipMapHandles& h) {
   b.buffer("clipMap", h.constants);
   // Clipped levels wrap by hand in the shader; the pyramid wraps in the sampler.

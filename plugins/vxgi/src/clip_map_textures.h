@@ -29,9 +29,12 @@ class ClipMapTextures {
   /// Imports every texture into `graph` (constants are left invalid).
   ClipMapHandles import(RenderGraph& graph);
 
+  /// Declares a pass's sampled reads of every texture and the constants; returns the
+  /// versions it reads.
+  static ClipMapHandles readSampled(PassBuilder& builder, ClipMapHandles handles);
   /// Sampled bindings for tracing and debug shaders (names of clip_map.glsl).
   static void bindSampled(gpu::Bindings& bindings, const ClipMapHandles& handles);
-  /// Bytes of all textures (the formula's value, checked against the descriptions).
+  /// Bytes of all textures, from their descriptions (equals format().bytes()).
   uint64_t bytes() const;
 
  private:

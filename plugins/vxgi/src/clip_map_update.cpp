@@ -32,15 +32,20 @@ bool VoxelizationPlan::empty() const {
   return true;
 }
 
+uint64_t VoxelizationPlan::voxels(uint32_t level) const {
+  uint64_t n = 0;
+  for (const VoxelBox& b : boxes.at(level)) n += b.volume();
+  return n;
+}
+
 uint64_t VoxelizationPlan::voxels() const {
   uint64_t n = 0;
-  for (const auto& level : boxes)
-    for (const VoxelBox& b : level) n += b.volume();
+  for (uint32_t l = 0; l < boxes.size(); ++l) n += voxels(l);
   return n;
 }
 
 VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& layout,
-                                     const std::string& settingsKey) const {
+                                     uint64_t settingsKey) const {
   VoxelizationPlan p;
   p.layout = layout;
   p.sceneRevision = scene.revision();

@@ -21,17 +21,17 @@ struct VoxelizationPlan {
   uint64_t sceneRevision = 0;
   uint64_t geometry = 0, materials = 0, lights = 0;  ///< per-kind scene revisions
   const Scene* scene = nullptr;
-  std::string settingsKey;
+  uint64_t settingsKey = 0;
   bool empty() const;
   uint64_t voxels() const;
+  uint64_t voxels(uint32_t level) const;
 };
 
 class ClipMapUpdate {
  public:
   /// What this frame must voxelize to hold `layout` for `scene` with `settingsKey`
-  /// (everything that changes what voxels contain, as text).
-  VoxelizationPlan plan(const Scene& scene, const ClipMapLayout& layout,
-                        const std::string& settingsKey) const;
+  /// (a hash of everything besides placement that changes what voxels contain).
+  VoxelizationPlan plan(const Scene& scene, const ClipMapLayout& layout, uint64_t settingsKey) const;
   /// The plan's work reached the GPU: its layout is what the textures now hold.
   void commit(const VoxelizationPlan& plan);
   /// Forget everything (textures were re-created).
@@ -42,7 +42,7 @@ class ClipMapUpdate {
   uint64_t sceneRevision_ = 0;
   uint64_t geometry_ = 0, materials_ = 0, lights_ = 0;
   const Scene* scene_ = nullptr;
-  std::string settingsKey_;
+  uint64_t settingsKey_ = 0;
 };
 
 }  // namespace bounce::vxgi

@@ -37,10 +37,7 @@ void addDebugPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSet
                        glm::ivec4(int32_t(width), int32_t(height), int32_t(mode), s.debugLevel.get()),
                        glm::vec4(exposure, 0, 0, 0)};
     graph.addPass("VXGI.DebugVoxels", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-      ClipMapHandles h = handles;
-      h.constants = b.read(h.constants, Access::StorageRead);
-      for (auto* list : {&h.opacityClip, &h.emittanceClip, &h.opacityMip, &h.emittanceMip})
-        for (TextureHandle& t : *list) t = b.read(t, Access::Sampled);
+      const ClipMapHandles h = ClipMapTextures::readSampled(b, handles);
       TextureHandle out = b.write(b.createTexture("VXGI.DebugView", viewDesc), Access::StorageWrite);
       bb.setTexture(channels::DebugView, out);
       return [=](PassContext& ctx) {
@@ -65,8 +62,6 @@ void addDebugPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSet
     TextureHandle in = b.readOptional(bb.texture(channel), Access::Sampled);
     TextureHandle out = b.write(b.createTexture("VXGI.DebugView", viewDesc), Access::StorageWrite);
     bb.setTexture(channels::DebugView, out);
-    TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
-    (void)depth;  // keeps the view's size and the G-buffer the channel was traced from
     return [=](PassContext& ctx) {
       if (!ctx.available(in)) {
         // The channel was not produced (e.g. specular with no specular surface): black.

@@ -27,11 +27,21 @@ struct TracingPush {
 };
 static_assert(sizeof(TracingPush) <= 128);
 
-void bindGBuffer(gpu::Bindings& bind, TextureHandle normal, TextureHandle depth, TextureHandle material) {
-  bind.texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
-      .texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
-      .texture("gMaterial", material, gpu::SamplerKind::NearestClamp);
-}
+// The G-buffer channels tracing_common.glsl reads.
+struct GBufferInputs {
+  TextureHandle normal, depth, material;
+
+  static GBufferInputs read(PassBuilder& b, const Blackboard& bb) {
+    return {b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled),
+            b.read(bb.texture(channels::GBufferDepth), Access::Sampled),
+            b.read(bb.texture(channels::GBufferMaterial), Access::Sampled)};
+  }
+  void bind(gpu::Bindings& bind) const {
+    bind.texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
+        .texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
+        .texture("gMaterial", material, gpu::SamplerKind::NearestClamp);
+  }
+};
 
 }  // namespace
 
@@ -60,13 +70,8 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
   // Diffuse (or ambient occlusion), at 1/k resolution when sparse.
   TextureHandle traced;
   graph.addPass("VXGI.DiffuseTracing", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-    TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
-    TextureHandle material = b.read(bb.texture(channels::GBufferMaterial), Access::Sampled);
-    ClipMapHandles h = handles;
-    h.constants = b.read(h.constants, Access::StorageRead);
-    for (auto* list : {&h.opacityClip, &h.emittanceClip, &h.opacityMip, &h.emittanceMip})
-      for (TextureHandle& t : *list) t = b.read(t, Access::Sampled);
+    const GBufferInputs gbuffer = GBufferInputs::read(b, bb);
+    const ClipMapHandles h = ClipMapTextures::readSampled(b, handles);
     traced = b.write(
         b.createTexture("VXGI.DiffuseTraced", TextureDesc::viewSized(diffuseFormat, 1.0f / float(sparsity))),
         Access::StorageWrite);
@@ -83,16 +88,14 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
       const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("diffuse.comp", format));
       gpu::Bindings bind;
       ClipMapTextures::bindSampled(bind, h);
-      bindGBuffer(bind, normal, depth, material);
+      gbuffer.bind(bind);
       bind.storage("outTraced", out);
       ctx.dispatchThreads(pipeline, bind, {width, height, 1}, push);
     };
   });
   if (sparsity > 1) {
     graph.addPass("VXGI.DiffuseInterpolation", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-      TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-      TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
-      TextureHandle material = b.read(bb.texture(channels::GBufferMaterial), Access::Sampled);
+      const GBufferInputs gbuffer = GBufferInputs::read(b, bb);
       TextureHandle sparse = b.read(traced, Access::Sampled);
       TextureHandle full = b.write(b.createTexture("VXGI.Diffuse", TextureDesc::viewSized(diffuseFormat)),
                                    Access::StorageWrite);
@@ -100,7 +103,7 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("upsample.comp", format));
         gpu::Bindings bind;
-        bindGBuffer(bind, normal, depth, material);
+        gbuffer.bind(bind);
         bind.texture("traced", sparse, gpu::SamplerKind::NearestClamp).storage("outFull", full);
         ctx.dispatchThreads(pipeline, bind, {push.sizes.x, push.sizes.y, 1}, push);
       };
@@ -113,13 +116,8 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
   const bool specularOn = s.specularEnable.get();
   const float threshold = s.specularRoughnessThreshold.get();
   graph.addPass("VXGI.SpecularTracing", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-    TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
-    TextureHandle material = b.read(bb.texture(channels::GBufferMaterial), Access::Sampled);
-    ClipMapHandles h = handles;
-    h.constants = b.read(h.constants, Access::StorageRead);
-    for (auto* list : {&h.opacityClip, &h.emittanceClip, &h.opacityMip, &h.emittanceMip})
-      for (TextureHandle& t : *list) t = b.read(t, Access::Sampled);
+    const GBufferInputs gbuffer = GBufferInputs::read(b, bb);
+    const ClipMapHandles h = ClipMapTextures::readSampled(b, handles);
     TextureHandle out =
         b.write(b.createTexture("VXGI.Specular", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
                 Access::StorageWrite);
@@ -138,7 +136,7 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
       const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("specular.comp", format));
       gpu::Bindings bind;
       ClipMapTextures::bindSampled(bind, h);
-      bindGBuffer(bind, normal, depth, material);
+      gbuffer.bind(bind);
       bind.storage("outTraced", out);
       ctx.dispatchThreads(pipeline, bind, {specularPush.sizes.x, specularPush.sizes.y, 1}, specularPush);
     };

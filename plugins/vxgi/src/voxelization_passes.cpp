@@ -1,5 +1,6 @@
 #include "vxgi_passes.h"
 
+#include <bounce/gpu/barriers.h>
 #include <bounce/gpu/pass_context.h>
 #include <bounce/graph/channels.h>
 
@@ -56,19 +57,6 @@ struct DownsamplePush {
   glm::ivec4 dstMin, dstSize;
 };
 
-void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src, VkAccessFlags2 srcAccess,
-                   VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
-  VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-  mb.srcStageMask = src;
-  mb.srcAccessMask = srcAccess;
-  mb.dstStageMask = dst;
-  mb.dstAccessMask = dstAccess;
-  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dep.memoryBarrierCount = 1;
-  dep.pMemoryBarriers = &mb;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
-
 // Writes (read-modify-write: the voxels outside this frame's boxes are kept).
 void writeAll(PassBuilder& b, std::vector<TextureHandle>& handles) {
   for (TextureHandle& h : handles) h = b.write(h, Access::StorageReadWrite);
@@ -104,14 +92,17 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   const Scene& scene = frame.scene;
   std::vector<glm::vec4> materialParams;
   std::vector<bool> voxelized;
-  for (const Material& m : scene.materials()) {
-    materialParams.emplace_back(settings.thickness.of(m), settings.proportional.of(m) ? 1.0f : 0.0f,
-                                settings.omniDirectional.of(m) ? 1.0f : 0.0f, 0.0f);
-    voxelized.push_back(settings.voxelize.of(m));
-  }
+  // Built only on frames that voxelize; a static frame culls every pass that reads them.
+  if (work)
+    for (const Material& m : scene.materials()) {
+      materialParams.emplace_back(settings.thickness.of(m), settings.proportional.of(m) ? 1.0f : 0.0f,
+                                  settings.omniDirectional.of(m) ? 1.0f : 0.0f, 0.0f);
+      voxelized.push_back(settings.voxelize.of(m));
+    }
   if (materialParams.empty()) materialParams.emplace_back(1.0f);
   std::vector<uint32_t> lightFlags;
-  for (const Light& l : scene.lights()) lightFlags.push_back(settings.indirectLighting.of(l) ? 1u : 0u);
+  if (work)
+    for (const Light& l : scene.lights()) lightFlags.push_back(settings.indirectLighting.of(l) ? 1u : 0u);
   if (lightFlags.empty()) lightFlags.push_back(0u);
   const uint32_t lightCount = uint32_t(scene.lights().size());
   const float storageScale = settings.emittanceStorageScale.get();
@@ -152,11 +143,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     const VoxelBox inner = layout.innerBox(level);
     std::vector<Aabb> worldBoxes;
     for (const VoxelBox& box : boxes) worldBoxes.push_back(layout.worldBox(level, box));
-    const uint64_t voxels = [&] {
-      uint64_t n = 0;
-      for (const VoxelBox& box : boxes) n += box.volume();
-      return n;
-    }();
+    const uint64_t voxels = plan.voxels(level);
     const bool levelWork = !boxes.empty();
     auto decide = [levelWork, voxels, reason] {
       return levelWork ? PassDecision::run(fmt::format("{}: {} voxels", reason, voxels))
@@ -310,8 +297,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         DownsamplePush push{glm::ivec4(0), glm::ivec4(glm::ivec3(int32_t(size)), mip == 0 ? 1 : 2)};
         ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
         // The next mip reads what this one wrote.
-        memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
       }
       committed();
     };

@@ -20,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include <functional>
 #include <optional>
 
 namespace bounce::vxgi {
@@ -63,14 +64,20 @@ class VxgiPlugin final : public Plugin {
                       "r.VXGI.DebugMode 5", off});
   }
 
-  // Everything besides placement that changes what the voxels hold.
-  std::string settingsKey(const FrameContext& frame) const {
-    std::string key = fmt::format("{}|{}", settings_.emittanceStorageScale.get(),
-                                  frame.setting(settings_.emittanceAmbient));
-    for (const Material& m : frame.scene.materials())
-      key += fmt::format("|{}{}{}{}", settings_.voxelize.of(m), settings_.thickness.of(m),
-                         settings_.proportional.of(m), settings_.omniDirectional.of(m));
-    for (const Light& l : frame.scene.lights()) key += settings_.indirectLighting.of(l) ? "L" : "l";
+  // Everything besides placement that changes what the voxels hold, hashed (it is
+  // compared every frame; a change re-voxelizes the whole clip-map).
+  uint64_t settingsKey(const FrameContext& frame) const {
+    uint64_t key = 1469598103934665603ull;  // FNV-1a offset basis
+    auto mix = [&key](auto value) { key = (key ^ std::hash<decltype(value)>{}(value)) * 1099511628211ull; };
+    mix(settings_.emittanceStorageScale.get());
+    mix(frame.setting(settings_.emittanceAmbient));
+    for (const Material& m : frame.scene.materials()) {
+      mix(settings_.voxelize.of(m));
+      mix(settings_.thickness.of(m));
+      mix(settings_.proportional.of(m));
+      mix(settings_.omniDirectional.of(m));
+    }
+    for (const Light& l : frame.scene.lights()) mix(settings_.indirectLighting.of(l));
     return key;
   }
 

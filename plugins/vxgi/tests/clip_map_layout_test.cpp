@@ -2,6 +2,7 @@
 // range, level placement and nesting, toroidal slab updates.
 
 #include "clip_map_layout.h"
+#include "clip_map_textures.h"
 #include "clip_map_update.h"
 
 #include <gtest/gtest.h>
@@ -24,6 +25,24 @@ TEST(ClipMapFormat, MemoryMatchesTheSeedsRange) {
   EXPECT_EQ(large.mipBytes(), mipVoxels * 56);
   EXPECT_EQ(large.mipCount(), 8u);
   EXPECT_EQ(large.bytes(), large.clipBytes() + large.mipBytes());
+}
+
+TEST(ClipMapTextures, AllocateExactlyTheFormula) {
+  // The textures' own descriptions (what the graph allocates and reports per resource)
+  // add up to levels × size³ × bytes per voxel + mips, for every storage choice.
+  for (bool six : {false, true})
+    for (bool fp16 : {false, true})
+      for (bool ao : {false, true}) {
+        ClipMapFormat f{.mapSize = 64,
+                        .stackLevels = 4,
+                        .sixDirections = six,
+                        .emittanceFp16 = fp16,
+                        .ambientOcclusionMode = ao};
+        ClipMapTextures textures;
+        EXPECT_TRUE(textures.configure(f));
+        EXPECT_EQ(textures.bytes(), f.bytes()) << six << fp16 << ao;
+        EXPECT_FALSE(textures.configure(f));  // same format: nothing re-created
+      }
 }
 
 TEST(ClipMapFormat, AmbientOcclusionModeStoresNoEmittance) {
@@ -88,25 +107,25 @@ TEST(ClipMapUpdate, StaticSceneAndStillCameraVoxelizeNothing) {
   Scene scene;
   ClipMapLayout layout = ClipMapLayout::place({.mapSize = 32, .stackLevels = 3}, 0.1f, {0, 0, 0});
   ClipMapUpdate update;
-  VoxelizationPlan first = update.plan(scene, layout, "k");
+  VoxelizationPlan first = update.plan(scene, layout, 1u);
   EXPECT_EQ(first.voxels(), 3ull * 32 * 32 * 32);
   update.commit(first);
-  VoxelizationPlan second = update.plan(scene, layout, "k");
+  VoxelizationPlan second = update.plan(scene, layout, 1u);
   EXPECT_TRUE(second.empty()) << second.reason;
   EXPECT_EQ(second.reason, "clip-map up to date");
   // A setting that changes voxel contents redoes everything.
-  EXPECT_EQ(update.plan(scene, layout, "other").voxels(), 3ull * 32 * 32 * 32);
+  EXPECT_EQ(update.plan(scene, layout, 2u).voxels(), 3ull * 32 * 32 * 32);
 }
 
 TEST(ClipMapUpdate, SubVoxelCameraMovesVoxelizeNothing) {
   Scene scene;
   ClipMapFormat f{.mapSize = 32, .stackLevels = 3};
   ClipMapUpdate update;
-  update.commit(update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.0f, 0.0f, 0.0f}), "k"));
+  update.commit(update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.0f, 0.0f, 0.0f}), 1u));
   // Origins snap to two voxels: moving a quarter voxel changes nothing.
-  EXPECT_TRUE(update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.025f, 0.0f, 0.0f}), "k").empty());
+  EXPECT_TRUE(update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.025f, 0.0f, 0.0f}), 1u).empty());
   // Moving four voxels uncovers slabs in each level, not whole levels.
-  VoxelizationPlan moved = update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.4f, 0.0f, 0.0f}), "k");
+  VoxelizationPlan moved = update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.4f, 0.0f, 0.0f}), 1u);
   EXPECT_FALSE(moved.empty());
   EXPECT_LT(moved.voxels(), 32ull * 32 * 32 / 4);
 }
