@@ -22,11 +22,12 @@ vec4 fetchVoxel(vec3 p, int level, out bool inside) {
   inside = all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, ivec3(clipMap.mapSize)));
   ivec3 t = vxgiWrap(c) + ivec3(0, 0, level * clipMap.mapSize);
   vec4 o0 = texelFetch(opacityClip0, t, 0);
-  float opacity = max(o0.x, max(o0.y, o0.z));
+  float density = max(o0.x, max(o0.y, o0.z));
 #if VXGI_DIRECTIONS == 6
   vec4 o1 = texelFetch(opacityClip1, t, 0);
-  opacity = max(opacity, max(o1.x, max(o1.y, o1.z)));
+  density = max(density, max(o1.x, max(o1.y, o1.z)));
 #endif
+  float opacity = vxgiOpacityFromDensity(density);
   vec3 e = vec3(0.0);
 #if !VXGI_AO_MODE
   // The brightest facing direction: what the voxel sends the most light into.
@@ -34,7 +35,8 @@ vec4 fetchVoxel(vec3 p, int level, out bool inside) {
 #if VXGI_DIRECTIONS == 6
   e = max(e, max(max(texelFetch(emittanceClip3, t, 0).rgb, texelFetch(emittanceClip4, t, 0).rgb), texelFetch(emittanceClip5, t, 0).rgb));
 #endif
-  e *= clipMap.emittanceDecode;
+  // Emittance is radiance × density: back to radiance.
+  e *= clipMap.emittanceDecode / max(density, 1e-6);
 #endif
   return vec4(e, opacity);
 }
@@ -68,7 +70,7 @@ void main() {
         float shade = tEntry.x >= tEntry.y && tEntry.x >= tEntry.z ? faceShade.x : (tEntry.y >= tEntry.z ? faceShade.y : faceShade.z);
         color = vec3(voxel.a * shade);
       } else {
-        color = voxel.rgb / max(voxel.a, 1e-3) * pc.display.x;
+        color = voxel.rgb * pc.display.x;
       }
       break;
     }

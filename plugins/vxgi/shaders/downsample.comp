@@ -2,7 +2,8 @@
 // Downsampling, one 2×2×2 block per output voxel (seed 000): per facing direction the
 // block is seen as 4 columns along that direction's axis; each column composites its
 // two voxels front to back as light leaving that way meets them, and the block is the
-// average of its columns. So a cube of one voxel is 100% opaque at its own level, 25%
+// average of its columns (in opacity and radiance; stored again as density, see
+// clip_map.glsl). So a cube of one voxel is 100% opaque at its own level, 25%
 // at the next and 6.25% at the one after, and a wall stays opaque along its normal.
 //   mode 0: clipped level L−1 → the inner box of level L (what level L−1 covers)
 //   mode 1: the coarsest clipped level → mip 0 of the pyramid
@@ -64,8 +65,8 @@ ivec3 outputCoord(ivec3 local) {
   return local;
 }
 
-// Opacity of child o for facing direction d (0..2: +axis or axis, 3..5: −axis).
-float childOpacity(ivec3 local, ivec3 o, int d) {
+// Stored density of child o for facing direction d (0..2: +axis or axis, 3..5: −axis).
+float childDensity(ivec3 local, ivec3 o, int d) {
   ivec3 c = childCoord(local, o);
 #if VXGI_DIRECTIONS == 6
   return d < 3 ? imageLoad(opacitySrc0, c)[d] : imageLoad(opacitySrc1, c)[d - 3];
@@ -74,7 +75,9 @@ float childOpacity(ivec3 local, ivec3 o, int d) {
 #endif
 }
 
-vec3 childEmittance(ivec3 local, ivec3 o, int d) {
+float childOpacity(ivec3 local, ivec3 o, int d) { return vxgiOpacityFromDensity(childDensity(local, o, d)); }
+
+vec3 childEmittanceStored(ivec3 local, ivec3 o, int d) {
 #if VXGI_AO_MODE
   return vec3(0.0);
 #else
@@ -93,10 +96,16 @@ vec3 childEmittance(ivec3 local, ivec3 o, int d) {
 #endif
 }
 
+// Radiance of child o (stored emittance over density; 0 where it is empty).
+vec3 childRadiance(ivec3 local, ivec3 o, int d) {
+  float density = childDensity(local, o, d);
+  return density > 1e-6 ? childEmittanceStored(local, o, d) / density : vec3(0.0);
+}
+
 void main() {
   ivec3 local = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(local, pc.dstSize.xyz))) return;
-  float opacity[6];
+  float opacity[6];  // stored density
   vec3 emittance[6];
   for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
     int axis = d % 3;
@@ -112,17 +121,20 @@ void main() {
       lo[across.y] = hi[across.y] = col >> 1;
       hi[axis] = 1;
       float aLo = childOpacity(local, lo, d), aHi = childOpacity(local, hi, d);
-      vec3 eLo = childEmittance(local, lo, d), eHi = childEmittance(local, hi, d);
+      vec3 lLo = childRadiance(local, lo, d) * aLo, lHi = childRadiance(local, hi, d) * aHi;
       a += 1.0 - (1.0 - aLo) * (1.0 - aHi);
 #if VXGI_DIRECTIONS == 6
-      e += towardsPositive ? eHi + (1.0 - aHi) * eLo : eLo + (1.0 - aLo) * eHi;
+      e += towardsPositive ? lHi + (1.0 - aHi) * lLo : lLo + (1.0 - aLo) * lHi;
 #else
       // Three axes only: light leaves both ways; average the two orders.
-      e += 0.5 * ((eHi + (1.0 - aHi) * eLo) + (eLo + (1.0 - aLo) * eHi));
+      e += 0.5 * ((lHi + (1.0 - aHi) * lLo) + (lLo + (1.0 - aLo) * lHi));
 #endif
     }
-    opacity[d] = saturate(a * 0.25);
-    emittance[d] = e * 0.25;
+    // The block: mean opacity of its columns, and the radiance leaving it per unit of
+    // that opacity, stored again as density and radiance × density.
+    float alpha = saturate(a * 0.25);
+    opacity[d] = vxgiDensityFromOpacity(alpha);
+    emittance[d] = alpha > 1e-6 ? (e * 0.25) / alpha * opacity[d] : vec3(0.0);
   }
   ivec3 dst = outputCoord(local);
   imageStore(opacityDst0, dst, vec4(opacity[0], opacity[1], opacity[2], 0.0));

@@ -1,9 +1,10 @@
 #version 460
-// Voxelization, step 4: turns the scratch sums of one level's dirty box into opacity
-// and premultiplied emittance in the clip-map, and zeroes nothing (the next
-// voxelization clears the scratch volume).
-//   opacity   = min(1, Σ coverage)                       per facing direction
-//   emittance = Σ radiance·coverage / max(1, Σ coverage)  (= radiance × opacity for one surface)
+// Voxelization, step 4: turns the scratch sums of one level's dirty box into density
+// and emittance in the clip-map (see clip_map.glsl), per facing direction:
+//   opacity   α = min(1, Σ coverage), stored as density (normalised optical depth)
+//   radiance  L = Σ radiance·weight / Σ coverage (weight = coverage when proportional)
+//   emittance = L × density
+// The next voxelization clears the scratch volume.
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
@@ -70,9 +71,14 @@ void main() {
     float w = imageLoad(scratch, scratchCoord(t, d * per + 3)).r;
     vec3 sum = vec3(imageLoad(scratch, scratchCoord(t, d * per + 0)).r, imageLoad(scratch, scratchCoord(t, d * per + 1)).r,
                     imageLoad(scratch, scratchCoord(t, d * per + 2)).r);
-    emittance[d] = sum / max(1.0, w);
+    // w ≈ 0 with a sum means nothing opaque emits here; 1e-6 only keeps the division
+    // finite, and the density below is then 0 anyway.
+    emittance[d] = sum / max(w, 1e-6);
 #endif
-    opacity[d] = saturate(isnan(w) ? 0.0 : w);
+    opacity[d] = vxgiDensityFromOpacity(saturate(isnan(w) ? 0.0 : w));
+#if !VXGI_AO_MODE
+    emittance[d] *= opacity[d];
+#endif
   }
 #if VXGI_DIRECTIONS == 6
   imageStore(opacityOut0, dst, vec4(opacity[0], opacity[1], opacity[2], 0.0));

@@ -110,9 +110,11 @@ void main() {
       for (int s = 0; s < 2; ++s) {
         float facing = s == 0 ? n[axis] : -n[axis];  // > 0: the front faces direction ±axis
         bool frontSide = facing > 0.0;
-        float w = frontSide || doubleSided ? coverage[axis] : 0.0;
-        float emitWeight = omni ? 1.0 : (proportional ? w : (w > 0.0 ? 1.0 : 0.0));
-        if (w <= 0.0 && !omni) continue;
+        // Omni-directional: an isotropic voxel, as opaque and as bright every way.
+        float w = omni ? 1.0 : (frontSide || doubleSided ? coverage[axis] : 0.0);
+        if (w <= 0.0) continue;
+        // Not proportional: the surface's full radiance leaves every voxel it touches.
+        float emitWeight = proportional ? w : 1.0;
         int direction = VXGI_DIRECTIONS == 6 ? axis + 3 * s : axis;
         int base = direction * perDirection;
 #if VXGI_AO_MODE
@@ -120,11 +122,9 @@ void main() {
 #else
         vec3 radiance = frontSide || omni ? front : back;  // omni: the front radiance, every way
         imageAtomicAdd(scratch, scratchCoord(t, base + 3), w);
-        if (emitWeight > 0.0) {
-          imageAtomicAdd(scratch, scratchCoord(t, base + 0), radiance.r * emitWeight);
-          imageAtomicAdd(scratch, scratchCoord(t, base + 1), radiance.g * emitWeight);
-          imageAtomicAdd(scratch, scratchCoord(t, base + 2), radiance.b * emitWeight);
-        }
+        imageAtomicAdd(scratch, scratchCoord(t, base + 0), radiance.r * emitWeight);
+        imageAtomicAdd(scratch, scratchCoord(t, base + 1), radiance.g * emitWeight);
+        imageAtomicAdd(scratch, scratchCoord(t, base + 2), radiance.b * emitWeight);
 #endif
       }
     }

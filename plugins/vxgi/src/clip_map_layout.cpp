@@ -111,12 +111,6 @@ VoxelBox ClipMapLayout::voxelsTouching(uint32_t level, const Aabb& world) const 
   return box.empty() ? VoxelBox{} : box;
 }
 
-std::vector<glm::ivec3> ClipMapLayout::origins() const {
-  std::vector<glm::ivec3> o;
-  for (const LevelPlacement& l : levels_) o.push_back(l.origin);
-  return o;
-}
-
 VoxelBox intersect(const VoxelBox& a, const VoxelBox& b) {
   VoxelBox r{glm::max(a.min, b.min), glm::min(a.max, b.max)};
   return r.empty() ? VoxelBox{} : r;

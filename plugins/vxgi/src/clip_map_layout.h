@@ -5,9 +5,11 @@
 //
 // Storage, per voxel, indexed by the direction a surface faces ("facing direction"):
 //   opacity:   3 axes in one RGBA8 texture, or 6 signed directions in two
-//              (+X+Y+Z and −X−Y−Z); projected coverage, 0..1
+//              (+X+Y+Z and −X−Y−Z); stored as density, the optical depth of the
+//              projected coverage normalised to 0..1 (linear filtering then averages
+//              what Beer–Lambert integrates; see shaders/vxgi/clip_map.glsl)
 //   emittance: one texture per facing direction, RGBA8 (scaled by the storage scale)
-//              or RGBA16F; rgb is radiance × coverage (premultiplied)
+//              or RGBA16F; rgb is radiance × density
 // so 3 directions with RGBA8 cost 4 + 3·4 = 16 B per voxel and 6 directions with FP16
 // 8 + 6·8 = 56 B, the seed's range. Clipped levels are stacked along Z in one 3D
 // texture per channel (size × size × size·levels) and addressed toroidally: world
@@ -87,11 +89,6 @@ class ClipMapLayout {
   Aabb worldBox(uint32_t level, const VoxelBox& box) const;
   /// The voxels of `level` a world box touches (clipped to the level).
   VoxelBox voxelsTouching(uint32_t level, const Aabb& world) const;
-
-  bool operator==(const ClipMapLayout& o) const {
-    return format_ == o.format_ && voxelSize0_ == o.voxelSize0_ && origins() == o.origins();
-  }
-  std::vector<glm::ivec3> origins() const;
 
  private:
   ClipMapFormat format_;

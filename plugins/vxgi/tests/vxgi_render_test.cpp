@@ -42,17 +42,17 @@ std::vector<std::string> with(std::vector<std::string> base, std::vector<std::st
 TEST_F(VxgiRender, WhiteFurnaceReadsEmissionTimesOnePlusAlbedo) {
   // Walls of albedo ρ = 0.5 emitting Le = 1, all voxelized: every cone ends on a wall
   // of radiance Le, so the irradiance is πLe and the radiance Le + ρ/π·πLe = 1.5.
-  start("content/tests/white_furnace.gltf", kSmall, "VXGI");
+  // 64³ voxels: the 5 cm walls sit in 7 cm voxels at level 0.
+  start("content/tests/white_furnace.gltf", with(kSmall, {"r.VXGI.MapSize=64"}), "VXGI");
   RenderedFrame f = render(32, 32, {"radiance", "indirect-irradiance"});
   const Stats r = stats(f.images.at("radiance"), 1), e = stats(f.images.at("indirect-irradiance"), 1);
   ASSERT_TRUE(r.finite && e.finite);
-  // Stated tolerance, what this version reaches at 32³ × 3 levels: every pixel within
-  // 8% (measured 1.40..1.44, cones still leave the one-voxel walls of this small
-  // clip-map before they are fully opaque). The issue aims at 2%; not there yet.
-  EXPECT_NEAR(r.min, 1.5, 0.12) << fmt::format("radiance {}..{} mean {}", r.min, r.max, r.mean);
-  EXPECT_NEAR(r.max, 1.5, 0.12) << fmt::format("radiance {}..{} mean {}", r.min, r.max, r.mean);
-  EXPECT_LE(r.max, 1.5 * 1.02);  // never more light than the furnace holds
-  EXPECT_NEAR(e.mean, M_PI, M_PI * 0.2);
+  // The issue's aim: every pixel within 2% (measured 1.472..1.493).
+  EXPECT_NEAR(r.min, 1.5, 0.03) << fmt::format("radiance {}..{} mean {}", r.min, r.max, r.mean);
+  EXPECT_NEAR(r.max, 1.5, 0.03) << fmt::format("radiance {}..{} mean {}", r.min, r.max, r.mean);
+  // Irradiance on its own, within 3% on average (measured 0.9825 π): what is missing
+  // is cones whose footprint outgrows the room before they are fully opaque.
+  EXPECT_NEAR(e.mean, M_PI, M_PI * 0.03);
 }
 
 TEST_F(VxgiRender, NoFlaggedMaterialCullsEveryPassAndMatchesNoGi) {

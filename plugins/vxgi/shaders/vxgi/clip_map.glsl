@@ -16,6 +16,18 @@
 #endif
 #define VXGI_MAX_LEVELS 5
 
+// Opacity is stored as optical depth τ = −ln(1 − α), normalised by the largest one
+// stored: filtering then averages density (what Beer–Lambert integrates) rather than
+// opacity, so a one-voxel wall smeared over two texels by trilinear filtering still
+// stops a cone. α = 0.9999 is "opaque" (τ = 9.21); one RGBA8 step is then 3.6% opacity
+// at the transparent end, and 25% and 6.25% (the seed's downsampled cube) store as
+// 25.1% and 7.0%.
+const float VXGI_MAX_OPTICAL_DEPTH = 9.2103;
+float vxgiDensityFromOpacity(float alpha) {
+  return -log(1.0 - clamp(alpha, 0.0, 0.9999)) / VXGI_MAX_OPTICAL_DEPTH;
+}
+float vxgiOpacityFromDensity(float density) { return 1.0 - exp(-max(density, 0.0) * VXGI_MAX_OPTICAL_DEPTH); }
+
 layout(std430, binding = 0) readonly buffer VxgiClipMap {
   ivec4 levelOrigin[VXGI_MAX_LEVELS];  // xyz: first voxel of the level, in its own voxels
   float voxelSize0;                    // finest voxel edge, metres
@@ -117,18 +129,19 @@ vec3 vxgiMipCoord(vec3 p) {
   return p / extent;
 }
 
-// Weights of the three axes for a direction: squared components sum to 1.
-vec3 vxgiAxisWeights(vec3 d) { return d * d; }
-
-// The opacity and premultiplied emittance that light travelling along -r (towards a
-// cone marching along r) meets: surfaces facing -r, per axis, blended by r².
+// What light travelling along −r (towards a cone marching along r) meets in a voxel:
+// surfaces facing −r. Both parts are linear in the stored values, so filtering, level
+// blending and downsampling average them correctly:
+//   density    optical depth across one footprint, in units of VXGI_MAX_OPTICAL_DEPTH
+//   emittance  radiance × density (the volume-rendering source term), so
+//              emittance / density is the density-weighted mean radiance
 struct VxgiSample {
-  vec3 emittance;  // premultiplied radiance
-  float opacity;
+  vec3 emittance;
+  float density;
 };
 
-// Picks, per axis, the opacity of surfaces facing against r.
-vec3 vxgiAxisOpacity(vec3 r, vec4 pos, vec4 neg) {
+// Picks, per axis, the value of surfaces facing against r.
+vec3 vxgiFacing(vec3 r, vec4 pos, vec4 neg) {
 #if VXGI_DIRECTIONS == 6
   // Facing −r: along +X travel the surfaces facing −X stop the cone.
   return vec3(r.x > 0.0 ? neg.x : pos.x, r.y > 0.0 ? neg.y : pos.y, r.z > 0.0 ? neg.z : pos.z);
@@ -137,32 +150,24 @@ vec3 vxgiAxisOpacity(vec3 r, vec4 pos, vec4 neg) {
 #endif
 }
 
-// Combines per-axis opacity and premultiplied emittance into what a cone along r sees.
-// Opacity as optical depth: moving one footprint along r advances |r_a| of one along
-// each axis, so τ = Σ |r_a|·τ_a with τ_a = −ln(1 − α_a). Along an axis this is α_a
-// itself; a wall stays opaque to oblique cones (a weighted average would let half of
-// a 45° cone through a one-voxel wall). Emittance keeps the axes' mean radiance
-// (premultiplied sum over opacity sum, weighted by r²) at the combined opacity.
-VxgiSample vxgiCombine(vec3 r, vec3 alpha, vec3 ex, vec3 ey, vec3 ez) {
+// Moving one footprint along r advances |r_a| of one along each axis, so the optical
+// depth met is Σ |r_a|·τ_a: along an axis the axis's own value, and a wall stays just as
+// opaque to oblique cones (the longer path through it makes up for the smaller share).
+VxgiSample vxgiCombine(vec3 r, vec3 density, vec3 ex, vec3 ey, vec3 ez) {
+  vec3 w = abs(r);
   VxgiSample s;
-  // 0.9999: a fully opaque axis gives optical depth 9.2 instead of infinity.
-  vec3 tau = -log(1.0 - clamp(alpha, vec3(0.0), vec3(0.9999)));
-  s.opacity = 1.0 - exp(-dot(abs(r), tau));
-  vec3 w = vxgiAxisWeights(r);
-  float weightedAlpha = dot(w, alpha);
-  vec3 weightedEmittance = w.x * ex + w.y * ey + w.z * ez;
-  s.emittance = weightedAlpha > 1e-6 ? weightedEmittance * (s.opacity / weightedAlpha) : vec3(0.0);
+  s.density = dot(w, density);
+  s.emittance = w.x * ex + w.y * ey + w.z * ez;
   return s;
 }
 
 VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
-  VxgiSample s;
   vec4 pos, neg = vec4(0.0);
   VXGI_SAMPLE_CLIP(opacityClip0, p, level, pos);
 #if VXGI_DIRECTIONS == 6
   VXGI_SAMPLE_CLIP(opacityClip1, p, level, neg);
 #endif
-  vec3 alpha = vxgiAxisOpacity(r, pos, neg);
+  vec3 density = vxgiFacing(r, pos, neg);
   vec4 ex = vec4(0.0), ey = vec4(0.0), ez = vec4(0.0);
 #if !VXGI_AO_MODE
 #if VXGI_DIRECTIONS == 6
@@ -175,18 +180,17 @@ VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
   VXGI_SAMPLE_CLIP(emittanceClip2, p, level, ez);
 #endif
 #endif
-  return vxgiCombine(r, alpha, ex.rgb * clipMap.emittanceDecode, ey.rgb * clipMap.emittanceDecode,
+  return vxgiCombine(r, density, ex.rgb * clipMap.emittanceDecode, ey.rgb * clipMap.emittanceDecode,
                      ez.rgb * clipMap.emittanceDecode);
 }
 
 VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
-  VxgiSample s;
   vec3 uvw = vxgiMipCoord(p);
   vec4 pos = textureLod(opacityMip0, uvw, mip), neg = vec4(0.0);
 #if VXGI_DIRECTIONS == 6
   neg = textureLod(opacityMip1, uvw, mip);
 #endif
-  vec3 alpha = vxgiAxisOpacity(r, pos, neg);
+  vec3 density = vxgiFacing(r, pos, neg);
   vec3 ex = vec3(0.0), ey = vec3(0.0), ez = vec3(0.0);
 #if !VXGI_AO_MODE
 #if VXGI_DIRECTIONS == 6
@@ -200,7 +204,7 @@ VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
 #endif
 #endif
   float k = clipMap.emittanceDecode;
-  return vxgiCombine(r, alpha, ex * k, ey * k, ez * k);
+  return vxgiCombine(r, density, ex * k, ey * k, ez * k);
 }
 
 // A filtered sample for a cone footprint of diameter `diameter` at p: the level whose
@@ -213,7 +217,7 @@ VxgiSample vxgiSample(vec3 p, float diameter, vec3 r, out bool valid) {
   float blend = fract(lod);
   VxgiSample s;
   s.emittance = vec3(0.0);
-  s.opacity = 0.0;
+  s.density = 0.0;
   valid = true;
   if (level < last) {
     int inside = vxgiFinestLevelAt(p, level);
@@ -230,9 +234,9 @@ VxgiSample vxgiSample(vec3 p, float diameter, vec3 r, out bool valid) {
   if (level < last) {
     VxgiSample a = vxgiSampleClip(p, level, r);
     if (blend <= 0.0) return a;
-    VxgiSample b = (level + 1 < last || vxgiInsideLevel(p, level + 1)) ? vxgiSampleClip(p, level + 1, r) : a;
+    VxgiSample b = vxgiSampleClip(p, level + 1, r);  // a coarser level holds every point of a finer one
     s.emittance = mix(a.emittance, b.emittance, blend);
-    s.opacity = mix(a.opacity, b.opacity, blend);
+    s.density = mix(a.density, b.density, blend);
     return s;
   }
   // Beyond the clipped levels: mip m of the pyramid has voxels 2^(m+1) times the
@@ -243,7 +247,7 @@ VxgiSample vxgiSample(vec3 p, float diameter, vec3 r, out bool valid) {
     VxgiSample b = vxgiSampleMip(p, 0.0, r);
     float t = clamp(mip + 1.0, 0.0, 1.0);
     s.emittance = mix(a.emittance, b.emittance, t);
-    s.opacity = mix(a.opacity, b.opacity, t);
+    s.density = mix(a.density, b.density, t);
     return s;
   }
   return vxgiSampleMip(p, mip, r);

@@ -7,9 +7,10 @@
 //   // cone.irradiance, cone.ambient, cone.finalOpacity
 //
 // The cone marches front to back through the clip-map, one sample per step whose
-// footprint matches the cone's diameter there, and composites premultiplied emittance
-// under the opacity accumulated so far:
-//   radiance += (1 − opacity) · emittance_i ;  opacity += (1 − opacity) · opacity_i
+// footprint matches the cone's diameter there. Each step's opacity comes from the
+// density it crosses (α_i = 1 − exp(−τ_i)) and its radiance L_i is the density-weighted
+// mean radiance there; they composite under the opacity accumulated so far:
+//   radiance += (1 − opacity) · α_i · L_i ;  opacity += (1 − opacity) · α_i
 #ifndef VXGI_TRACE_CONE_GLSL
 #define VXGI_TRACE_CONE_GLSL
 
@@ -73,14 +74,13 @@ ConeTracingResults TraceCone(ConeTracingArguments args) {
     VxgiSample s = vxgiSample(p, diameter, r, valid);
     if (!valid) break;  // left the clip-map: nothing more to gather
     float step = stepFactor * diameter;
-    // The stored opacity is for a path of one footprint; a shorter step sees less of it
-    // (Beer–Lambert: 1 − (1 − α)^(step / footprint)).
-    float alpha = clamp(s.opacity, 0.0, 1.0);
-    float corrected = 1.0 - pow(max(1.0 - alpha, 1e-6), step / diameter);
-    vec3 emittance = alpha > 1e-6 ? s.emittance * (corrected / alpha) : vec3(0.0);
-    radiance += (1.0 - opacity) * max(emittance, vec3(0.0));
-    if (t <= args.ambientRange) ambientOpacity += (1.0 - ambientOpacity) * corrected;
-    opacity += (1.0 - opacity) * corrected;
+    // Beer–Lambert over this step: the sample's density is optical depth per footprint.
+    float alpha = 1.0 - exp(-max(s.density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * (step / diameter));
+    // Density-weighted mean radiance of what the step passes through.
+    vec3 radianceHere = s.density > 1e-6 ? max(s.emittance, vec3(0.0)) / s.density : vec3(0.0);
+    radiance += (1.0 - opacity) * alpha * radianceHere;
+    if (t <= args.ambientRange) ambientOpacity += (1.0 - ambientOpacity) * alpha;
+    opacity += (1.0 - opacity) * alpha;
     t += step;
   }
   // Stopped on an opaque surface: the last < 0.5% is more of the same surface, so
