@@ -53,7 +53,9 @@ void main() {
   for (int i = 0; i < 3; ++i) {
     vec3 a3 = vec3(p[i], 1.0), b3 = vec3(p[(i + 1) % 3], 1.0);
     edge[i] = cross(a3, b3);
-    edge[i].z -= 0.5 * (abs(edge[i].x) + abs(edge[i].y));
+    // Counter-clockwise, the inside is where dot(edge, (x, y, 1)) > 0: growing the
+    // constant moves the edge outwards by half a pixel along both axes.
+    edge[i].z += 0.5 * (abs(edge[i].x) + abs(edge[i].y));
   }
   vec2 q[3];
   for (int i = 0; i < 3; ++i) {
