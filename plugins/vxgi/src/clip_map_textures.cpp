@@ -71,11 +71,12 @@ ClipMapHandles ClipMapTextures::readSampled(PassBuilder& b, ClipMapHandles h) {
 
 void ClipMapTextures::bindSampled(gpu::Bindings& b, const ClipMapHandles& h) {
   b.buffer("clipMap", h.constants);
-  // Clipped levels wrap by hand in the shader; the pyramid wraps in the sampler.
+  // Clipped levels wrap in the sampler along X and Y and by hand along Z (they are
+  // stacked in Z); the pyramid wraps in the sampler along all three.
   for (size_t i = 0; i < h.opacityClip.size(); ++i)
-    b.texture(fmt::format("opacityClip{}", i), h.opacityClip[i], gpu::SamplerKind::LinearClamp);
+    b.texture(fmt::format("opacityClip{}", i), h.opacityClip[i], gpu::SamplerKind::LinearRepeat);
   for (size_t i = 0; i < h.emittanceClip.size(); ++i)
-    b.texture(fmt::format("emittanceClip{}", i), h.emittanceClip[i], gpu::SamplerKind::LinearClamp);
+    b.texture(fmt::format("emittanceClip{}", i), h.emittanceClip[i], gpu::SamplerKind::LinearRepeat);
   for (size_t i = 0; i < h.opacityMip.size(); ++i)
     b.texture(fmt::format("opacityMip{}", i), h.opacityMip[i], gpu::SamplerKind::LinearMipmapRepeat);
   for (size_t i = 0; i < h.emittanceMip.size(); ++i)

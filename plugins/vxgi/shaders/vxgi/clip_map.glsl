@@ -92,34 +92,25 @@ ivec3 vxgiWrap(ivec3 c) {
 }
 
 #if VXGI_CLIP_MAP_TEXTURES
-// One trilinear sample of a clipped level at world position p. Inside the level the
-// hardware filters; where the 8 texels straddle the toroidal seam (or the boundary to
-// the next level in the Z stack), they are fetched and blended here instead.
-#define VXGI_SAMPLE_CLIP(tex, p, level, result)                                                   \
-  {                                                                                               \
-    vec3 u_ = (p) / vxgiVoxelSize(level) - 0.5;                                                   \
-    vec3 f_ = fract(u_);                                                                          \
-    ivec3 t_ = vxgiWrap(ivec3(floor(u_)));                                                        \
-    int n_ = clipMap.mapSize;                                                                     \
-    if (all(lessThan(t_, ivec3(n_ - 1)))) {                                                       \
-      vec3 uvw_ = (vec3(t_) + f_ + 0.5) / vec3(n_, n_, n_ * clipMap.levelCount);                  \
-      uvw_.z += float(level) / float(clipMap.levelCount);                                          \
-      result = textureLod(tex, uvw_, 0.0);                                                        \
-    } else {                                                                                      \
-      ivec3 t1_ = (t_ + 1) % n_;                                                                  \
-      ivec3 z_ = ivec3(0, 0, (level) * n_);                                                       \
-      vec4 c000_ = texelFetch(tex, ivec3(t_.x, t_.y, t_.z) + z_, 0);                              \
-      vec4 c100_ = texelFetch(tex, ivec3(t1_.x, t_.y, t_.z) + z_, 0);                             \
-      vec4 c010_ = texelFetch(tex, ivec3(t_.x, t1_.y, t_.z) + z_, 0);                             \
-      vec4 c110_ = texelFetch(tex, ivec3(t1_.x, t1_.y, t_.z) + z_, 0);                            \
-      vec4 c001_ = texelFetch(tex, ivec3(t_.x, t_.y, t1_.z) + z_, 0);                             \
-      vec4 c101_ = texelFetch(tex, ivec3(t1_.x, t_.y, t1_.z) + z_, 0);                            \
-      vec4 c011_ = texelFetch(tex, ivec3(t_.x, t1_.y, t1_.z) + z_, 0);                            \
-      vec4 c111_ = texelFetch(tex, ivec3(t1_.x, t1_.y, t1_.z) + z_, 0);                           \
-      vec4 x00_ = mix(c000_, c100_, f_.x), x10_ = mix(c010_, c110_, f_.x);                        \
-      vec4 x01_ = mix(c001_, c101_, f_.x), x11_ = mix(c011_, c111_, f_.x);                        \
-      result = mix(mix(x00_, x10_, f_.y), mix(x01_, x11_, f_.y), f_.z);                           \
-    }                                                                                             \
+// One trilinear sample of a clipped level at world position p. The levels are stacked
+// along Z, so the sampler wraps X and Y toroidally (repeat addressing) but not Z: the
+// two Z slices are fetched at their texel centres, each filtered bilinearly in XY, and
+// blended here. That costs two fetches everywhere instead of one inside the level and
+// eight at a seam, and has no branch: a SIMD implementation (lavapipe runs both sides
+// of every divergent branch) pays for what it uses and no more.
+#define VXGI_SAMPLE_CLIP(tex, p, level, result)                                               \
+  {                                                                                           \
+    vec3 u_ = (p) / vxgiVoxelSize(level) - 0.5;                                               \
+    int n_ = clipMap.mapSize;                                                                 \
+    float z_ = floor(u_.z);                                                                   \
+    int z0_ = vxgiWrap(ivec3(0, 0, int(z_))).z;                                               \
+    int z1_ = (z0_ + 1) % n_;                                                                 \
+    vec2 xy_ = (u_.xy + 0.5) / float(n_);                                                     \
+    float zScale_ = 1.0 / float(n_ * clipMap.levelCount);                                     \
+    float zBase_ = float((level) * n_) + 0.5;                                                 \
+    vec4 s0_ = textureLod(tex, vec3(xy_, (zBase_ + float(z0_)) * zScale_), 0.0);              \
+    vec4 s1_ = textureLod(tex, vec3(xy_, (zBase_ + float(z1_)) * zScale_), 0.0);              \
+    result = mix(s0_, s1_, u_.z - z_);                                                        \
   }
 
 // A sample of the mip pyramid at world position p and mip `mip` (fractional: the
@@ -213,44 +204,33 @@ VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
 VxgiSample vxgiSample(vec3 p, float diameter, vec3 r, out bool valid) {
   float lod = log2(max(diameter, clipMap.voxelSize0) / clipMap.voxelSize0);
   int last = clipMap.levelCount - 1;
-  int level = int(floor(lod));
+  int level = min(int(floor(lod)), last);
   float blend = fract(lod);
   VxgiSample s;
   s.emittance = vec3(0.0);
   s.density = 0.0;
-  valid = true;
+  int inside = vxgiFinestLevelAt(p, level);
+  valid = inside >= 0;
+  if (!valid) return s;  // outside the clip-map
+  if (inside > level) blend = 0.0;  // p is past the finer level's edge: use the coarser alone
+  level = inside;
+  // Two samples, blended: the level and the next coarser one (a coarser level holds every
+  // point of a finer one), or beyond the clipped levels the coarsest level and the mip
+  // pyramid, whose mip m has voxels 2^(m+1) times the coarsest level's.
+  VxgiSample a = vxgiSampleClip(p, level, r);
+  VxgiSample b;
+  float t;
   if (level < last) {
-    int inside = vxgiFinestLevelAt(p, level);
-    if (inside < 0) {
-      valid = false;
-      return s;
-    }
-    if (inside > level) blend = 0.0;  // p is past the finer level's edge: use the coarser alone
-    level = inside;
-  } else if (!vxgiInsideLevel(p, last)) {
-    valid = false;
-    return s;
+    b = vxgiSampleClip(p, level + 1, r);
+    t = blend;
+  } else {
+    float mip = lod - float(last) - 1.0;
+    b = vxgiSampleMip(p, max(mip, 0.0), r);
+    t = clamp(mip + 1.0, 0.0, 1.0);
   }
-  if (level < last) {
-    VxgiSample a = vxgiSampleClip(p, level, r);
-    if (blend <= 0.0) return a;
-    VxgiSample b = vxgiSampleClip(p, level + 1, r);  // a coarser level holds every point of a finer one
-    s.emittance = mix(a.emittance, b.emittance, blend);
-    s.density = mix(a.density, b.density, blend);
-    return s;
-  }
-  // Beyond the clipped levels: mip m of the pyramid has voxels 2^(m+1) times the
-  // coarsest level's; between the coarsest level and mip 0, blend the two.
-  float mip = lod - float(last) - 1.0;
-  if (mip < 0.0) {
-    VxgiSample a = vxgiSampleClip(p, last, r);
-    VxgiSample b = vxgiSampleMip(p, 0.0, r);
-    float t = clamp(mip + 1.0, 0.0, 1.0);
-    s.emittance = mix(a.emittance, b.emittance, t);
-    s.density = mix(a.density, b.density, t);
-    return s;
-  }
-  return vxgiSampleMip(p, mip, r);
+  s.emittance = mix(a.emittance, b.emittance, t);
+  s.density = mix(a.density, b.density, t);
+  return s;
 }
 
 #endif  // VXGI_CLIP_MAP_TEXTURES
