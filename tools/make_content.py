@@ -62,6 +62,12 @@ ROOM_SIZE = 2.0                    # m, white furnace and each of the two rooms
 THIN_WALL_THICKNESS = 0.02         # m, between the two rooms
 TWO_ROOMS_ALBEDO = 0.73
 TWO_ROOMS_LIGHT_INTENSITY = 10.0   # W/sr, in the left room only
+HDR_PANEL_SIZE = 0.4               # m, square emitter under the ceiling of a furnace room
+HDR_PANEL_RADIANCE = 1.0e4         # W/(m^2 sr): 10^4 x the walls' emission
+SMALL_EMITTER_SIZE = 0.02          # m, a cube far smaller than any voxel the tests use
+SMALL_EMITTER_RADIANCE = 1.0e4     # W/(m^2 sr)
+SMALL_EMITTER_HEIGHT = 1.0         # m above the floor
+TINY_SCENE_SIZE = 0.1              # m, a floor tile with a 4 cm box: inside one 1 m voxel
 
 # --- glTF constants ---------------------------------------------------------------------
 
@@ -341,13 +347,18 @@ def closed_room(x_min, x_max, thickness, skip_walls=()):
             yield name, Geometry().box(size), center
 
 
-def white_furnace():
-    s = GltfScene("closed emissive room of albedo 0.5: every surface sees radiance 2")
-    wall = s.material("FurnaceWall", (FURNACE_ALBEDO,) * 3, emissive=FURNACE_EMISSION, extras=VOXELIZE_FLAG)
+def furnace_room(note, emission=FURNACE_EMISSION):
+    s = GltfScene(note)
+    wall = s.material("FurnaceWall", (FURNACE_ALBEDO,) * 3, emissive=emission, extras=VOXELIZE_FLAG)
     r = ROOM_SIZE / 2
     for name, geometry, center in closed_room(-r, r, WALL_THICKNESS):
         s.object(name, geometry, wall, center)
-    s.camera("Centre", (0, r, 0), yfov=1.2)
+    return s, wall
+
+
+def white_furnace():
+    s, _ = furnace_room("closed emissive room of albedo 0.5: every surface sees radiance 2")
+    s.camera("Centre", (0, ROOM_SIZE / 2, 0), yfov=1.2)
     return s
 
 
@@ -374,6 +385,58 @@ def two_rooms_thin_wall():
     return s
 
 
+def hdr_emitter():
+    s, _ = furnace_room("furnace room (walls emit 1) with a ceiling panel 10^4 times brighter")
+    glow = s.material("Panel", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0), emissive_strength=HDR_PANEL_RADIANCE,
+                      extras=VOXELIZE_FLAG)
+    h = HDR_PANEL_SIZE / 2
+    # Facing down (cross(u, v) = -y), 1 cm under the ceiling.
+    s.object("Panel", Geometry().quad((0, ROOM_SIZE - 0.01, 0), (h, 0, 0), (0, 0, h)), glow)
+    s.camera("Down", (0, ROOM_SIZE / 2, 0), LOOK_DOWN, yfov=1.2)
+    return s
+
+
+def small_emitter():
+    s, _ = furnace_room("dark room of albedo 0.5 lit only by a 2 cm emissive cube", emission=None)
+    glow = s.material("Glow", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0), emissive_strength=SMALL_EMITTER_RADIANCE,
+                      extras=VOXELIZE_FLAG)
+    s.object("Emitter", Geometry().box((SMALL_EMITTER_SIZE,) * 3), glow, (0, SMALL_EMITTER_HEIGHT, 0))
+    # Looking down past the emitter at the floor under it.
+    s.camera("Down", (0.3, ROOM_SIZE * 0.9, 0), LOOK_DOWN, yfov=1.2)
+    return s
+
+
+def degenerate_geometry():
+    """The white furnace with a mesh of degenerate triangles and zero normals inside."""
+    s, wall = furnace_room("white furnace with degenerate triangles and zero normals inside")
+    g = Geometry()
+    # A well-shaped quad whose normals are all zero: the loader must recompute them.
+    g.quad((0.3, 0.8, 0.2), (0.2, 0, 0), (0, 0.2, 0))
+    for i in range(len(g.normals)):
+        g.normals[i] = (0.0, 0.0, 0.0)
+    base = len(g.positions)
+    # Zero-area triangles: repeated corners and collinear corners.
+    g.positions += [(0.0, 1.0, 0.0), (0.0, 1.0, 0.0), (0.1, 1.0, 0.0), (0.2, 1.0, 0.0), (0.4, 1.0, 0.0)]
+    g.normals += [(0.0, 1.0, 0.0)] * 5
+    g.indices += [base, base + 1, base + 2, base + 2, base + 3, base + 4]
+    s.object("Degenerate", g, wall)
+    s.camera("Centre", (0, ROOM_SIZE / 2, 0), yfov=1.2)
+    return s
+
+
+def tiny_scene():
+    """A 10 cm floor tile with a 4 cm box and a point light, all inside one 1 m voxel."""
+    s = GltfScene("a 10 cm scene: floor tile, box, point light; within one voxel of 1 m")
+    gray = s.material("Gray", (0.5,) * 3, extras=VOXELIZE_FLAG)
+    h = TINY_SCENE_SIZE / 2
+    c = (0.5, 0.5, 0.5)
+    s.object("Tile", Geometry().quad(c, (0, 0, h), (h, 0, 0)), gray)
+    s.object("Box", Geometry().box((0.04,) * 3), gray, (c[0], c[1] + 0.02, c[2]))
+    s.light("Bulb", "point", 0.01, (c[0] + 0.02, c[1] + 0.08, c[2]), extras=INDIRECT_LIGHT_FLAG)
+    s.camera("Top", (c[0], c[1] + 0.12, c[2]), LOOK_DOWN, yfov=1.0)
+    return s
+
+
 def main():
     repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -388,6 +451,10 @@ def main():
     white_furnace().write(os.path.join(tests, "white_furnace.gltf"))
     two_rooms_thin_wall().write(os.path.join(tests, "two_rooms_thin_wall.gltf"))
     cornell_box(flagged=False).write(os.path.join(tests, "no_flagged_materials.gltf"))
+    hdr_emitter().write(os.path.join(tests, "hdr_emitter.gltf"))
+    small_emitter().write(os.path.join(tests, "small_emitter.gltf"))
+    degenerate_geometry().write(os.path.join(tests, "degenerate_geometry.gltf"))
+    tiny_scene().write(os.path.join(tests, "tiny_scene.gltf"))
 
 
 if __name__ == "__main__":

@@ -44,10 +44,15 @@ class RenderFixture : public ::testing::Test {
   }
 
   RenderedFrame render(uint32_t width, uint32_t height, std::vector<std::string> aovs, bool display = false) {
+    return render(view(width, height), std::move(aovs), display);
+  }
+
+  /// Renders from a camera of the test's choosing.
+  RenderedFrame render(const FrameView& v, std::vector<std::string> aovs, bool display = false) {
     FrameOutputs out;
     out.aovs = std::move(aovs);
     out.display = display;
-    RenderedFrame f = renderer->render(view(width, height), out, frame_++);
+    RenderedFrame f = renderer->render(v, out, frame_++);
     EXPECT_TRUE(f.gpu.ok()) << f.gpu.errors.front();
     return f;
   }

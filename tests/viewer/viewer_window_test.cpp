@@ -2,18 +2,13 @@
 // device the tests use, with validation on. One scripted session switches debug views,
 // toggles the UI and types bad console lines; each test checks one behaviour of it.
 
-#include "bounce/image/image_buffer.h"
 #include "support/x_display.h"
+#include "viewer/viewer_session.h"
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
-#include <sys/wait.h>
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -24,58 +19,11 @@ namespace bounce {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CommandResult {
-  int status = -1;
-  std::string output;
-};
-
-fs::path scratchDir() {
-  // One folder per test process: ctest runs the tests in parallel processes, each with
-  // its own scripted session and screenshots.
-  fs::path dir = fs::path(BOUNCE_BINARY_DIR) / "viewer-test" / std::to_string(::getpid());
-  fs::create_directories(dir / "runtime");
-  fs::permissions(dir / "runtime", fs::perms::owner_all, fs::perm_options::replace);
-  return dir;
-}
-
-/// Runs bounce-viewer with validation, no user ini and the build's shader cache.
-CommandResult runViewer(const std::string& args) {
-  const fs::path dir = scratchDir();
-  const std::string cmd =
-      std::string("cd ") + BOUNCE_SOURCE_DIR + " && XDG_RUNTIME_DIR=" + (dir / "runtime").string() +
-      " BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
-      "/shader-cache timeout 300 " + BOUNCE_BINARY_DIR + "/bin/bounce-viewer " + args + " 2>&1";
-  CommandResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buffer;
-  while (fgets(buffer.data(), int(buffer.size()), p)) r.output += buffer.data();
-  const int status = pclose(p);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-/// Mean over pixels and RGB of |a - b| (0..1); NaN when the sizes differ.
-double meanDifference(const ImageBuffer& a, const ImageBuffer& b) {
-  if (a.width != b.width || a.height != b.height || a.empty()) return NAN;
-  double sum = 0.0;
-  for (uint32_t y = 0; y < a.height; ++y)
-    for (uint32_t x = 0; x < a.width; ++x)
-      sum += glm::dot(glm::abs(a.rgb(x, y) - b.rgb(x, y)), glm::vec3(1.0f));
-  return sum / (3.0 * a.width * a.height);
-}
-
-/// Fraction of pixels whose RGB differs by more than `threshold` in some channel.
-double changedFraction(const ImageBuffer& a, const ImageBuffer& b, float threshold = 0.05f) {
-  size_t changed = 0;
-  for (uint32_t y = 0; y < a.height; ++y)
-    for (uint32_t x = 0; x < a.width; ++x) {
-      const glm::vec3 d = glm::abs(a.rgb(x, y) - b.rgb(x, y));
-      changed += std::max({d.x, d.y, d.z}) > threshold ? 1 : 0;
-    }
-  return double(changed) / (double(a.width) * a.height);
-}
+using test::changedFraction;
+using test::CommandResult;
+using test::meanDifference;
+using test::runViewer;
+using test::scratchDir;
 
 class ViewerWindowTest : public ::testing::Test {
  protected:
@@ -133,10 +81,7 @@ class ViewerWindowTest : public ::testing::Test {
   }
 
   static ImageBuffer screenshot(const std::string& name) {
-    ImageBuffer image;
-    std::string error;
-    EXPECT_TRUE(readPng((dir_ / name).string(), image, &error)) << error << "\n" << session_.output;
-    return image;
+    return test::readScreenshot(dir_ / name, session_);
   }
 
   static std::unique_ptr<test::XDisplay> display_;

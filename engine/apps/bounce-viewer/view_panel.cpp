@@ -43,9 +43,9 @@ void drawMainMenu(Viewer& viewer, PanelVisibility& panels) {
     ImGui::EndMenu();
   }
   const RenderedFrame& frame = viewer.lastFrame();
+  const std::string shown = viewer.debugView();
   ImGui::TextDisabled("%.1f ms GPU | %s | %s", frame.gpu.frameMilliseconds,
-                      viewer.engine().technique().c_str(),
-                      viewer.debugView().empty() ? "regular shading" : viewer.debugView().c_str());
+                      viewer.engine().technique().c_str(), shown.empty() ? "regular shading" : shown.c_str());
   ImGui::EndMainMenuBar();
 }
 
@@ -59,10 +59,13 @@ void drawViewPanel(Viewer& viewer, bool* open) {
   Engine& engine = viewer.engine();
   std::string error;
 
+  // Read every frame, not remembered: a view entered by typing its console line (or
+  // left by resetting the variable) shows here as selected at once.
+  const std::string shown = viewer.debugView();
   ImGui::TextUnformatted("Debug view");
-  if (ImGui::RadioButton("Regular shading", viewer.debugView().empty())) viewer.showDebugView({}, &error);
+  if (ImGui::RadioButton("Regular shading", shown.empty())) viewer.showDebugView({}, &error);
   for (const DebugViewRegistry::View& v : engine.debugViews().all()) {
-    if (ImGui::RadioButton(v.desc.name.c_str(), viewer.debugView() == v.desc.name))
+    if (ImGui::RadioButton(v.desc.name.c_str(), shown == v.desc.name))
       viewer.showDebugView(v.desc.name, &error);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("%s\n%s  (from %s)", v.desc.description.c_str(), v.desc.activate.c_str(),

@@ -185,16 +185,50 @@ bool Viewer::showDebugView(const std::string& name, std::string* error) {
       return false;
     }
   }
-  if (!debugView_.empty())
-    if (const DebugViewRegistry::View* current = views.find(debugView_);
-        current && !current->desc.deactivate.empty())
-      runLine(current->desc.deactivate);
-  debugView_.clear();
+  // Leave the view that is on now, which need not be the one last selected here: a line
+  // typed in the console may have entered another.
+  if (const DebugViewRegistry::View* current = views.find(debugView());
+      current && !current->desc.deactivate.empty())
+    runLine(current->desc.deactivate);
+  selectedDebugView_.clear();
   if (next) {
     runLine(next->desc.activate);
-    debugView_ = next->desc.name;
+    selectedDebugView_ = next->desc.name;
   }
   return true;
+}
+
+std::optional<bool> Viewer::debugViewOn(const DebugViewRegistry::View& view) const {
+  // A GI technique's passes, its debug view's among them, run only while it is selected.
+  if (const PluginDescriptor* plugin = engine_->plugins().descriptor(view.origin);
+      plugin && plugin->isGlobalIllumination() && !equalsIgnoreCase(engine_->technique(), plugin->name))
+    return false;
+  // The activate line as the console reads it: "name value" or "name=value", where a
+  // command of that name would win over a variable.
+  std::vector<std::string> words = Console::split(view.desc.activate);
+  if (!words.empty())
+    if (size_t eq = words[0].find('='); eq != std::string::npos && eq > 0) {
+      words.insert(words.begin() + 1, words[0].substr(eq + 1));
+      words[0].resize(eq);
+    }
+  if (words.size() < 2 || engine_->console().hasCommand(words[0])) return std::nullopt;
+  const CVar* cvar = engine_->cvars().find(words[0]);
+  if (!cvar) return std::nullopt;
+  std::string error;
+  const std::optional<CVarValue> value =
+      cvar->parse(fmt::format("{}", fmt::join(words.begin() + 1, words.end(), " ")), &error);
+  if (!value) return std::nullopt;
+  return cvar->value() == *value;
+}
+
+std::string Viewer::debugView() const {
+  const DebugViewRegistry& views = engine_->debugViews();
+  // The view selected here while it is still on; else the first view that is.
+  if (const DebugViewRegistry::View* selected = views.find(selectedDebugView_))
+    if (debugViewOn(*selected).value_or(true)) return selected->desc.name;
+  for (const DebugViewRegistry::View& v : views.all())
+    if (debugViewOn(v).value_or(false)) return v.desc.name;
+  return {};
 }
 
 bool Viewer::selectTechnique(const std::string& name, std::string* error) {

@@ -56,10 +56,14 @@ class Viewer {
   void setUiVisible(bool visible) { uiVisible_ = visible; }
   bool uiVisible() const { return uiVisible_; }
   void quit() { quit_ = true; }
-  /// Leaves the current debug view (its deactivate line) and enters `name` (its activate
-  /// line); an empty name is regular shading.
+  /// Leaves the debug view on screen (its deactivate line) and enters `name` (its
+  /// activate line); an empty name is regular shading.
   bool showDebugView(const std::string& name, std::string* error);
-  const std::string& debugView() const { return debugView_; }
+  /// The debug view on screen (empty: regular shading), read from the engine's state at
+  /// each call rather than remembered: a view whose activate line sets a console variable
+  /// is on while the variable holds that value and its plugin's passes run, however the
+  /// value got there (the selector, `debugview`, a line typed in the console, a script).
+  std::string debugView() const;
   /// Selects a GI technique (loading its plugin if it is not loaded); "none" for none.
   bool selectTechnique(const std::string& name, std::string* error);
   bool saveSettings(std::string* error);
@@ -86,6 +90,9 @@ class Viewer {
   void renderAndPresent();
   void writeScreenshot(const std::string& path, const WindowPixels& pixels, const ImageBuffer* hdr);
   void reportChangedProblems(const RenderedFrame& frame);
+  /// Whether `view` is on screen; nullopt when its activate line is not "variable
+  /// value", so the engine's state cannot tell.
+  std::optional<bool> debugViewOn(const DebugViewRegistry::View& view) const;
   int finish(int status);
 
   ViewerOptions options_;
@@ -111,7 +118,9 @@ class Viewer {
   uint32_t screenshotCount_ = 0;
   bool uiVisible_ = true;
   bool quit_ = false;
-  std::string debugView_;
+  // The view last entered through the viewer: preferred while it is still on, and the
+  // only record of views whose activate line is not a variable write.
+  std::string selectedDebugView_;
   std::atomic<uint64_t> frameIndex_ = 0;  // read by the log listener, on any thread
   VkExtent2D requestedExtent_{};
   ImageBuffer displayed_;  // the last good frame: shown again when one fails

@@ -71,16 +71,18 @@ void Viewer::registerCommands() {
        .run = [this](const std::vector<std::string>& args) {
          const std::string name = joined(args);
          if (name.empty() || equalsIgnoreCase(name, "list")) {
+           const std::string shown = debugView();
            ConsoleResult r;
-           r.lines.push_back(fmt::format("regular shading{}", debugView_.empty() ? "  (shown)" : ""));
+           r.lines.push_back(fmt::format("regular shading{}", shown.empty() ? "  (shown)" : ""));
            for (const DebugViewRegistry::View& v : engine_->debugViews().all())
              r.lines.push_back(fmt::format("{}: {} [{}]{}", v.desc.name, v.desc.description, v.desc.activate,
-                                           v.desc.name == debugView_ ? "  (shown)" : ""));
+                                           v.desc.name == shown ? "  (shown)" : ""));
            return r;
          }
          std::string error;
          if (!showDebugView(equalsIgnoreCase(name, "off") ? std::string() : name, &error)) return fail(error);
-         return ok(fmt::format("showing {}", debugView_.empty() ? "regular shading" : debugView_));
+         const std::string shown = debugView();
+         return ok(fmt::format("showing {}", shown.empty() ? "regular shading" : shown));
        }});
   console.addCommand({.name = "gi",
                       .help = "gi NAME | none: selects the GI technique (loads its plugin when needed).",

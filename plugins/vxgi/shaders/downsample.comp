@@ -96,10 +96,10 @@ vec3 childEmittanceStored(ivec3 local, ivec3 o, int d) {
 #endif
 }
 
-// Radiance of child o (stored emittance over density; 0 where it is empty).
-vec3 childRadiance(ivec3 local, ivec3 o, int d) {
-  float density = childDensity(local, o, d);
-  return density > 1e-6 ? childEmittanceStored(local, o, d) / density : vec3(0.0);
+// Radiance × opacity of child o: stored emittance × α/density, which stays finite and
+// keeps a faint voxel's light where its stored density rounded to 0 (clip_map.glsl).
+vec3 childRadianceTimesOpacity(ivec3 local, ivec3 o, int d) {
+  return childEmittanceStored(local, o, d) * vxgiAlphaPerDensity(childDensity(local, o, d), 1.0);
 }
 
 void main() {
@@ -121,7 +121,7 @@ void main() {
       lo[across.y] = hi[across.y] = col >> 1;
       hi[axis] = 1;
       float aLo = childOpacity(local, lo, d), aHi = childOpacity(local, hi, d);
-      vec3 lLo = childRadiance(local, lo, d) * aLo, lHi = childRadiance(local, hi, d) * aHi;
+      vec3 lLo = childRadianceTimesOpacity(local, lo, d), lHi = childRadianceTimesOpacity(local, hi, d);
       a += 1.0 - (1.0 - aLo) * (1.0 - aHi);
 #if VXGI_DIRECTIONS == 6
       e += towardsPositive ? lHi + (1.0 - aHi) * lLo : lLo + (1.0 - aLo) * lHi;
@@ -134,7 +134,7 @@ void main() {
     // that opacity, stored again as density and radiance × density.
     float alpha = saturate(a * 0.25);
     opacity[d] = vxgiDensityFromOpacity(alpha);
-    emittance[d] = alpha > 1e-6 ? (e * 0.25) / alpha * opacity[d] : vec3(0.0);
+    emittance[d] = (e * 0.25) / vxgiAlphaPerDensity(opacity[d], 1.0);
   }
   ivec3 dst = outputCoord(local);
   imageStore(opacityDst0, dst, vec4(opacity[0], opacity[1], opacity[2], 0.0));

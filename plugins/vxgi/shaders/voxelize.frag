@@ -33,6 +33,8 @@ layout(location = 1) in vec2 gUv;
 layout(location = 2) flat in vec3 gNormal;
 layout(location = 3) flat in int gAxis;
 layout(location = 4) flat in vec4 gPixelBox;
+layout(location = 5) flat in vec4 gTriangle01;
+layout(location = 6) flat in vec2 gTriangle2;
 
 layout(location = 0) out vec4 unusedColor;
 
@@ -41,6 +43,40 @@ layout(location = 0) out vec4 unusedColor;
 ivec3 scratchCoord(ivec3 t, int channel) {
   int n = clipMap.mapSize, cx = draw.scratchLayout.x;
   return t + ivec3((channel % cx) * n, 0, (channel / cx) * n);
+}
+
+// The area of the triangle (pixel units, counter-clockwise) inside the unit pixel whose
+// lower corner is `pixel`: Sutherland–Hodgman against the pixel's four sides, then the
+// shoelace formula. This is coverage supersampling taken to the limit: the pieces of a
+// mesh's triangles in one pixel add up to the area they cover, so a surface smaller than
+// a voxel blocks and emits in proportion to its size, while the dilated rasterization
+// still guarantees it a fragment.
+float pixelCoverage(vec2 pixel, vec2 p0, vec2 p1, vec2 p2) {
+  vec2 poly[8], clipped[8];
+  poly[0] = p0 - pixel;
+  poly[1] = p1 - pixel;
+  poly[2] = p2 - pixel;
+  int count = 3;
+  for (int side = 0; side < 4; ++side) {
+    int axis = side & 1;
+    float bound = side < 2 ? 0.0 : 1.0, sgn = side < 2 ? 1.0 : -1.0;  // inside: sgn·(x − bound) ≥ 0
+    int out_ = 0;
+    for (int i = 0; i < count && i < 8; ++i) {
+      vec2 a = poly[i], b = poly[(i + 1) % count];
+      float da = sgn * (a[axis] - bound), db = sgn * (b[axis] - bound);
+      if (da >= 0.0 && out_ < 8) clipped[out_++] = a;
+      if ((da >= 0.0) != (db >= 0.0) && out_ < 8) clipped[out_++] = mix(a, b, da / (da - db));
+    }
+    count = out_;
+    for (int i = 0; i < count; ++i) poly[i] = clipped[i];
+    if (count < 3) return 0.0;
+  }
+  float twice = 0.0;
+  for (int i = 0; i < count; ++i) {
+    vec2 a = poly[i], b = poly[(i + 1) % count];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return clamp(0.5 * abs(twice), 0.0, 1.0);
 }
 
 bool inBox(ivec3 c, ivec4 lo, ivec4 hi) { return all(greaterThanEqual(c, lo.xyz)) && all(lessThan(c, hi.xyz)); }
@@ -88,8 +124,11 @@ void main() {
   vec3 n = gNormal;
   vec3 a = abs(n);
   float dominant = max(a[gAxis], 1e-6);
-  // Projected coverage of this piece along each axis, relative to one voxel face.
-  vec3 coverage = a / dominant;
+  // Projected coverage of this piece along each axis, relative to one voxel face: the
+  // part of the pixel it covers, seen along the dominant axis, and tilted to the others.
+  float covered = pixelCoverage(floor(gl_FragCoord.xy), gTriangle01.xy, gTriangle01.zw, gTriangle2);
+  if (!(covered > 0.0)) discard;  // the dilation's extra reach: the triangle misses this column
+  vec3 coverage = covered * a / dominant;
   bool proportional = params.y > 0.5, omni = params.z > 0.5;
 
 #if !VXGI_AO_MODE

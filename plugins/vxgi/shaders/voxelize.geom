@@ -2,7 +2,8 @@
 // Voxelization, step 2: project each triangle along its dominant axis onto the level's
 // voxel grid (one pixel = one voxel column) and dilate it by half a pixel diagonal, so
 // every voxel column the triangle touches gets a fragment (conservative coverage in
-// the shader: lavapipe has no VK_EXT_conservative_rasterization).
+// the shader: lavapipe has no VK_EXT_conservative_rasterization). The fragment shader
+// then weighs each fragment by how much of its pixel the undilated triangle covers.
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "bounce/scene.glsl"
@@ -20,6 +21,8 @@ layout(location = 1) out vec2 gUv;
 layout(location = 2) flat out vec3 gNormal;   // geometric normal (unit), counter-clockwise front
 layout(location = 3) flat out int gAxis;      // dominant axis: 0 x, 1 y, 2 z
 layout(location = 4) flat out vec4 gPixelBox; // the triangle's pixel bounds, dilated
+layout(location = 5) flat out vec4 gTriangle01; // the undilated triangle in pixels: p0, p1
+layout(location = 6) flat out vec2 gTriangle2;  // … p2 (counter-clockwise)
 
 // The two in-plane axes for a dominant axis.
 ivec2 planeAxes(int axis) { return axis == 0 ? ivec2(1, 2) : (axis == 1 ? ivec2(2, 0) : ivec2(0, 1)); }
@@ -78,6 +81,8 @@ void main() {
     gNormal = n;
     gAxis = axis;
     gPixelBox = vec4(lo, hi);
+    gTriangle01 = vec4(p[0], p[1]);
+    gTriangle2 = p[2];
     gl_Position = vec4(q[i] / size * 2.0 - 1.0, 0.5, 1.0);
     EmitVertex();
   }

@@ -24,6 +24,20 @@ void addBox(std::vector<VoxelBox>& boxes, const VoxelBox& box) {
   }
 }
 
+// A moved object's voxels are re-voxelized with this margin around the voxels its
+// bounds touch. Measured, not derived: with no margin or one voxel, a moved sub-voxel
+// emitter left stale light that a fresh voxelization does not have (the test
+// MovedObjectReVoxelizesItsRegionAndMatchesAFreshStart); with two the results are
+// identical. The cause is still open (see the plugin README).
+constexpr int32_t kMovedObjectMargin = 2;
+
+VoxelBox grown(VoxelBox box, const VoxelBox& level) {
+  if (box.empty()) return box;
+  box.min = glm::max(box.min - kMovedObjectMargin, level.min);
+  box.max = glm::min(box.max + kMovedObjectMargin, level.max);
+  return box;
+}
+
 }  // namespace
 
 bool VoxelizationPlan::empty() const {
@@ -88,8 +102,8 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
       if (c.kind != SceneChange::Transform) continue;
       ++movedObjects;
       for (uint32_t l = 0; l < levels; ++l) {
-        addBox(p.boxes[l], layout.voxelsTouching(l, c.before));
-        addBox(p.boxes[l], layout.voxelsTouching(l, c.after));
+        addBox(p.boxes[l], grown(layout.voxelsTouching(l, c.before), layout.levelBox(l)));
+        addBox(p.boxes[l], grown(layout.voxelsTouching(l, c.after), layout.levelBox(l)));
       }
     }
     if (movedObjects) why.push_back(fmt::format("{} object(s) moved", movedObjects));

@@ -53,6 +53,13 @@ struct ResolvePush {
   float storageScale;
 };
 
+struct TestCubePush {
+  glm::ivec4 boxMin, boxSize, innerMin, innerMax, scratchLayout;
+  glm::vec4 cubeMin, cubeMax;  // world metres
+};
+
+static_assert(sizeof(TestCubePush) <= 128);
+
 struct DownsamplePush {
   glm::ivec4 dstMin, dstSize;
 };
@@ -107,6 +114,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   const uint32_t lightCount = uint32_t(scene.lights().size());
   const float storageScale = settings.emittanceStorageScale.get();
   const glm::vec3 ambient(frame.setting(settings.emittanceAmbient));
+  const std::optional<Aabb> testCube = settings.testCubeBounds();
 
   BufferHandle materialBuffer, lightBuffer;
   graph.addPass("VXGI.VoxelizationInputs", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
@@ -222,6 +230,31 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         ctx.endRendering();
       };
     });
+
+    if (testCube)
+      graph.addPass(fmt::format("VXGI.TestCube.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+        scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+        BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+        b.condition(decide);
+        TextureHandle sums = scratchTexture;
+        const Aabb cube = *testCube;
+        return [=](PassContext& ctx) {
+          const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("test_cube.comp", format));
+          gpu::Bindings bind;
+          bind.buffer("clipMap", constants).storage("scratch", sums);
+          for (const VoxelBox& box : boxes) {
+            const glm::ivec3 size = box.max - box.min;
+            TestCubePush push{glm::ivec4(box.min, int32_t(level)),
+                              glm::ivec4(size, 0),
+                              glm::ivec4(inner.min, 0),
+                              glm::ivec4(inner.max, 0),
+                              glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
+                              glm::vec4(cube.min, 0.0f),
+                              glm::vec4(cube.max, 0.0f)};
+            ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
+          }
+        };
+      });
 
     graph.addPass(fmt::format("VXGI.Resolve.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       TextureHandle sums = b.read(scratchTexture, Access::StorageRead);

@@ -71,6 +71,7 @@ class VxgiPlugin final : public Plugin {
     auto mix = [&key](auto value) { key = (key ^ std::hash<decltype(value)>{}(value)) * 1099511628211ull; };
     mix(settings_.emittanceStorageScale.get());
     mix(frame.setting(settings_.emittanceAmbient));
+    mix(settings_.testCube.get());
     for (const Material& m : frame.scene.materials()) {
       mix(settings_.voxelize.of(m));
       mix(settings_.thickness.of(m));
@@ -106,12 +107,13 @@ class VxgiPlugin final : public Plugin {
           m.roughnessFactor < settings_.specularRoughnessThreshold.get())
         f.anySpecular = true;
     }
+    if (settings_.testCubeBounds()) f.anyVoxelized = true;
     const float decode = format.emittanceFp16 ? 1.0f : 1.0f / settings_.emittanceStorageScale.get();
     addConstantsPass(graph, f.handles, makeConstants(layout, decode));
     VoxelizationPlan plan = update_.plan(frame.scene, layout, settingsKey(frame));
     if (!f.anyVoxelized) {
       for (auto& boxes : plan.boxes) boxes.clear();
-      plan.reason = "no material is used with VXGI voxelization";
+      plan.reason = "no material is used with VXGI voxelization and no test cube";
     }
     auto committed = std::make_shared<VoxelizationPlan>(plan);
     addVoxelizationPasses(graph, frame, settings_, f.handles, plan,

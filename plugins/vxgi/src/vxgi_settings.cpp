@@ -23,6 +23,23 @@ std::optional<glm::vec3> parseVec3(const std::string& text) {
   return v;
 }
 
+// "x y z size": a centre and an edge length > 0, all finite.
+std::optional<Aabb> parseCube(const std::string& text) {
+  std::string s = text;
+  for (char& c : s)
+    if (c == ',') c = ' ';
+  std::istringstream in(s);
+  glm::vec3 centre;
+  float size = 0.0f;
+  if (!(in >> centre.x >> centre.y >> centre.z >> size)) return std::nullopt;
+  std::string rest;
+  if (in >> rest) return std::nullopt;
+  if (!std::isfinite(centre.x) || !std::isfinite(centre.y) || !std::isfinite(centre.z) ||
+      !std::isfinite(size) || size <= 0.0f)
+    return std::nullopt;
+  return Aabb{centre - glm::vec3(size * 0.5f), centre + glm::vec3(size * 0.5f)};
+}
+
 }  // namespace
 
 void VxgiSettings::declare(PluginContext& ctx) {
@@ -93,6 +110,17 @@ void VxgiSettings::declare(PluginContext& ctx) {
        .category = clip,
        .validate = [](const std::string& v) -> std::string {
          return parseVec3(v) ? "" : fmt::format("'{}' is not three finite numbers \"x y z\"", v);
+       }});
+  testCube = ctx.addCVar<std::string>(
+      {.name = "r.VXGI.TestCube",
+       .defaultValue = "",
+       .help =
+           "Built-in test scene (seed 000): \"x y z size\" voxelizes an opaque cube of that centre and edge "
+           "(metres) emitting white light (radiance 1) besides the scene; empty for none.",
+       .category = debug,
+       .validate = [](const std::string& v) -> std::string {
+         if (v.find_first_not_of(" \t") == std::string::npos || parseCube(v)) return "";
+         return fmt::format("'{}' is not \"x y z size\" (finite numbers, size > 0)", v);
        }});
   emittanceAmbient = ctx.addCVar<float>(
       {.name = "r.VXGI.EmittanceAmbient",
@@ -264,6 +292,8 @@ ClipMapFormat VxgiSettings::format() const {
   f.ambientOcclusionMode = ambientOcclusionMode.get();
   return f;
 }
+
+std::optional<Aabb> VxgiSettings::testCubeBounds() const { return parseCube(testCube.get()); }
 
 glm::vec3 VxgiSettings::anchor(const FrameContext& frame) const {
   const Aabb bounds = frame.scene.bounds();

@@ -31,6 +31,7 @@ struct VxgiSettings {
   CVarRef<float> emittanceStorageScale, voxelSize, emittanceAmbient;
   CVarRef<int32_t> anchorMode;
   CVarRef<std::string> anchorPosition;
+  CVarRef<std::string> testCube;  ///< the seed's built-in test scene: "x y z size" or empty
   // Tracing (post-process-volume settings where users tune them per area).
   CVarRef<bool> diffuseEnable, specularEnable;
   CVarRef<int32_t> diffuseCones, diffuseSparsity;
@@ -48,6 +49,9 @@ struct VxgiSettings {
 
   void declare(PluginContext& ctx);
   ClipMapFormat format() const;
+  /// The built-in test cube (seed 000: "an opaque cube emitting white light, with
+  /// position and size specified by the caller"), when r.VXGI.TestCube sets one.
+  std::optional<Aabb> testCubeBounds() const;
   /// The anchor the clip-map centres on this frame.
   glm::vec3 anchor(const FrameContext& frame) const;
 };

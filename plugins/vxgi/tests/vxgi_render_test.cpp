@@ -1,7 +1,7 @@
 // VXGI through the engine on lavapipe with validation on: the hard cases of issue 5
 // that must stay numerically stable, and "simulate only what the scene calls for".
 
-#include "render/render_fixture.h"
+#include "vxgi_test_support.h"
 
 #include <fmt/format.h>
 
@@ -11,33 +11,6 @@ namespace bounce::test {
 namespace {
 
 class VxgiRender : public RenderFixture {};
-
-struct Stats {
-  double mean = 0, min = 1e30, max = -1e30;
-  bool finite = true;
-};
-
-Stats stats(const ImageBuffer& img, uint32_t channel) {
-  Stats s;
-  for (uint32_t y = 0; y < img.height; ++y)
-    for (uint32_t x = 0; x < img.width; ++x) {
-      const float v = img.at(x, y, channel);
-      if (!std::isfinite(v)) s.finite = false;
-      s.mean += v;
-      s.min = std::min(s.min, double(v));
-      s.max = std::max(s.max, double(v));
-    }
-  s.mean /= double(img.width * img.height);
-  return s;
-}
-
-const std::vector<std::string> kSmall = {"r.VXGI.MapSize=32", "r.VXGI.StackLevels=3", "r.VXGI.DiffuseCones=8",
-                                         "r.VXGI.StoreEmittanceInFP16=1", "r.Bloom.Intensity=0"};
-
-std::vector<std::string> with(std::vector<std::string> base, std::vector<std::string> more) {
-  base.insert(base.end(), more.begin(), more.end());
-  return base;
-}
 
 TEST_F(VxgiRender, WhiteFurnaceReadsEmissionTimesOnePlusAlbedo) {
   // Walls of albedo ρ = 0.5 emitting Le = 1, all voxelized: every cone ends on a wall

@@ -27,6 +27,14 @@ float vxgiDensityFromOpacity(float alpha) {
   return -log(1.0 - clamp(alpha, 0.0, 0.9999)) / VXGI_MAX_OPTICAL_DEPTH;
 }
 float vxgiOpacityFromDensity(float density) { return 1.0 - exp(-max(density, 0.0) * VXGI_MAX_OPTICAL_DEPTH); }
+// α / density for a medium of `density` crossed over `k` × VXGI_MAX_OPTICAL_DEPTH of optical
+// depth per unit density (k = 1: one footprint): what turns stored emittance (radiance ×
+// density) into radiance × opacity. Its limit for a thin medium is finite, so emittance
+// keeps its power even where 8-bit storage rounded the density of a faint voxel to 0.
+float vxgiAlphaPerDensity(float density, float k) {
+  float x = max(density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * k;
+  return x > 1e-3 ? (1.0 - exp(-x)) / max(density, 1e-30) : VXGI_MAX_OPTICAL_DEPTH * k * (1.0 - 0.5 * x);
+}
 
 layout(std430, binding = 0) readonly buffer VxgiClipMap {
   ivec4 levelOrigin[VXGI_MAX_LEVELS];  // xyz: first voxel of the level, in its own voxels

@@ -9,7 +9,8 @@
 // The cone marches front to back through the clip-map, one sample per step whose
 // footprint matches the cone's diameter there. Each step's opacity comes from the
 // density it crosses (α_i = 1 − exp(−τ_i)) and its radiance L_i is the density-weighted
-// mean radiance there; they composite under the opacity accumulated so far:
+// mean radiance there (emittance / density); they composite under the opacity
+// accumulated so far:
 //   radiance += (1 − opacity) · α_i · L_i ;  opacity += (1 − opacity) · α_i
 #ifndef VXGI_TRACE_CONE_GLSL
 #define VXGI_TRACE_CONE_GLSL
@@ -76,9 +77,12 @@ ConeTracingResults TraceCone(ConeTracingArguments args) {
     float step = stepFactor * diameter;
     // Beer–Lambert over this step: the sample's density is optical depth per footprint.
     float alpha = 1.0 - exp(-max(s.density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * (step / diameter));
-    // Density-weighted mean radiance of what the step passes through.
-    vec3 radianceHere = s.density > 1e-6 ? max(s.emittance, vec3(0.0)) / s.density : vec3(0.0);
-    radiance += (1.0 - opacity) * alpha * radianceHere;
+    // What the step emits towards the cone apex: mean radiance L = emittance / density
+    // times α. Written as emittance × α/density, it needs no division by a density that
+    // 8-bit storage may have rounded to zero: a bright source much smaller than a voxel
+    // keeps its power at every level, where its opacity alone rounds away (one step of
+    // stored density is 3.5% opacity).
+    radiance += (1.0 - opacity) * vxgiAlphaPerDensity(s.density, step / diameter) * max(s.emittance, vec3(0.0));
     if (t <= args.ambientRange) ambientOpacity += (1.0 - ambientOpacity) * alpha;
     opacity += (1.0 - opacity) * alpha;
     t += step;

@@ -1,0 +1,83 @@
+#pragma once
+// Running bounce-viewer from a test: a scripted session in a real window (a private Xvfb
+// when no display is set), with validation on, and comparisons of its screenshots.
+
+#include "bounce/image/image_buffer.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <sys/wait.h>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace bounce::test {
+
+struct CommandResult {
+  int status = -1;
+  std::string output;
+};
+
+inline std::filesystem::path scratchDir() {
+  namespace fs = std::filesystem;
+  // One folder per test process: ctest runs the tests in parallel processes, each with
+  // its own scripted session and screenshots.
+  fs::path dir = fs::path(BOUNCE_BINARY_DIR) / "viewer-test" / std::to_string(::getpid());
+  fs::create_directories(dir / "runtime");
+  fs::permissions(dir / "runtime", fs::perms::owner_all, fs::perm_options::replace);
+  return dir;
+}
+
+/// Runs bounce-viewer with validation, no user ini and the build's shader cache.
+inline CommandResult runViewer(const std::string& args) {
+  const std::filesystem::path dir = scratchDir();
+  const std::string cmd =
+      std::string("cd ") + BOUNCE_SOURCE_DIR + " && XDG_RUNTIME_DIR=" + (dir / "runtime").string() +
+      " BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
+      "/shader-cache timeout 300 " + BOUNCE_BINARY_DIR + "/bin/bounce-viewer " + args + " 2>&1";
+  CommandResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buffer;
+  while (fgets(buffer.data(), int(buffer.size()), p)) r.output += buffer.data();
+  const int status = pclose(p);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+/// A screenshot the session wrote; a failed expectation (with the session's output)
+/// and an empty image when it is missing or unreadable.
+inline ImageBuffer readScreenshot(const std::filesystem::path& file, const CommandResult& session) {
+  ImageBuffer image;
+  std::string error;
+  EXPECT_TRUE(readPng(file.string(), image, &error)) << error << "\n" << session.output;
+  return image;
+}
+
+/// Mean over pixels and RGB of |a - b| (0..1); NaN when the sizes differ.
+inline double meanDifference(const ImageBuffer& a, const ImageBuffer& b) {
+  if (a.width != b.width || a.height != b.height || a.empty()) return NAN;
+  double sum = 0.0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x)
+      sum += glm::dot(glm::abs(a.rgb(x, y) - b.rgb(x, y)), glm::vec3(1.0f));
+  return sum / (3.0 * a.width * a.height);
+}
+
+/// Fraction of pixels whose RGB differs by more than `threshold` in some channel.
+inline double changedFraction(const ImageBuffer& a, const ImageBuffer& b, float threshold = 0.05f) {
+  size_t changed = 0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x) {
+      const glm::vec3 d = glm::abs(a.rgb(x, y) - b.rgb(x, y));
+      changed += std::max({d.x, d.y, d.z}) > threshold ? 1 : 0;
+    }
+  return double(changed) / (double(a.width) * a.height);
+}
+
+}  // namespace bounce::test
