@@ -432,7 +432,8 @@ def tiny_scene():
     c = (0.5, 0.5, 0.5)
     s.object("Tile", Geometry().quad(c, (0, 0, h), (h, 0, 0)), gray)
     s.object("Box", Geometry().box((0.04,) * 3), gray, (c[0], c[1] + 0.02, c[2]))
-    s.light("Bulb", "point", 0.01, (c[0] + 0.02, c[1] + 0.08, c[2]), extras=INDIRECT_LIGHT_FLAG)
+    # Beside the box, low: its +x face is lit and throws light back onto the tile.
+    s.light("Bulb", "point", 0.01, (c[0] + 0.045, c[1] + 0.03, c[2]), extras=INDIRECT_LIGHT_FLAG)
     s.camera("Top", (c[0], c[1] + 0.12, c[2]), LOOK_DOWN, yfov=1.0)
     return s
 

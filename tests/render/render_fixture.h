@@ -68,6 +68,14 @@ class RenderFixture : public ::testing::Test {
     }
   }
 
+  /// Checks validation and releases everything, so a test can start() again.
+  void finish() {
+    TearDown();
+    renderer.reset();
+    engine.reset();
+    device.reset();
+  }
+
   // Destroyed in reverse: the renderer, then the engine (plugins release GPU objects),
   // then the device.
   std::unique_ptr<gpu::Device> device;

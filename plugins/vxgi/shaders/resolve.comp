@@ -8,6 +8,7 @@
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
+#include "vxgi/scratch.glsl"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
@@ -39,11 +40,6 @@ layout(binding = 37, EMITTANCE_FORMAT) uniform writeonly image3D emittanceOut5;
 #endif
 #endif
 
-ivec3 scratchCoord(ivec3 t, int channel) {
-  int n = clipMap.mapSize, cx = pc.scratchLayout.x;
-  return t + ivec3((channel % cx) * n, 0, (channel / cx) * n);
-}
-
 // Radiance in storage units: RGBA8 saturates at 1 / storage scale (the seed's HDR
 // caveat); FP16 is clamped to its largest finite value.
 vec4 encodeEmittance(vec3 e) {
@@ -65,12 +61,12 @@ void main() {
   vec3 emittance[6];
   for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
 #if VXGI_AO_MODE
-    float w = imageLoad(scratch, scratchCoord(t, d)).r;
+    float w = imageLoad(scratch, vxgiScratchCoord(t, d, pc.scratchLayout.x)).r;
     emittance[d] = vec3(0.0);
 #else
-    float w = imageLoad(scratch, scratchCoord(t, d * per + 3)).r;
-    vec3 sum = vec3(imageLoad(scratch, scratchCoord(t, d * per + 0)).r, imageLoad(scratch, scratchCoord(t, d * per + 1)).r,
-                    imageLoad(scratch, scratchCoord(t, d * per + 2)).r);
+    float w = imageLoad(scratch, vxgiScratchCoord(t, d * per + 3, pc.scratchLayout.x)).r;
+    vec3 sum;
+    for (int c = 0; c < 3; ++c) sum[c] = imageLoad(scratch, vxgiScratchCoord(t, d * per + c, pc.scratchLayout.x)).r;
     // w ≈ 0 with a sum means nothing opaque emits here; 1e-6 only keeps the division
     // finite, and the density below is then 0 anyway.
     emittance[d] = sum / max(w, 1e-6);

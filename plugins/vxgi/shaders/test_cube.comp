@@ -9,6 +9,7 @@
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
+#include "vxgi/scratch.glsl"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
@@ -21,11 +22,6 @@ layout(push_constant) uniform Push {
 } pc;
 
 layout(binding = 21, r32f) uniform coherent image3D scratch;
-
-ivec3 scratchCoord(ivec3 t, int channel) {
-  int n = clipMap.mapSize, cx = pc.scratchLayout.x;
-  return t + ivec3((channel % cx) * n, 0, (channel / cx) * n);
-}
 
 void main() {
   ivec3 local = ivec3(gl_GlobalInvocationID);
@@ -44,13 +40,13 @@ void main() {
     float w = coverage[d % 3];
     int base = d * per;
 #if VXGI_AO_MODE
-    imageAtomicAdd(scratch, scratchCoord(t, base), w);
+    imageAtomicAdd(scratch, vxgiScratchCoord(t, base, pc.scratchLayout.x), w);
 #else
     // Radiance 1 × coverage, as a proportional-emittance surface adds it.
-    imageAtomicAdd(scratch, scratchCoord(t, base + 0), w);
-    imageAtomicAdd(scratch, scratchCoord(t, base + 1), w);
-    imageAtomicAdd(scratch, scratchCoord(t, base + 2), w);
-    imageAtomicAdd(scratch, scratchCoord(t, base + 3), w);
+    imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 0, pc.scratchLayout.x), w);
+    imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 1, pc.scratchLayout.x), w);
+    imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 2, pc.scratchLayout.x), w);
+    imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 3, pc.scratchLayout.x), w);
 #endif
   }
 }

@@ -10,6 +10,7 @@
 #include "bounce/scene.glsl"
 #include "bounce/lights.glsl"
 #include "vxgi/clip_map.glsl"
+#include "vxgi/scratch.glsl"
 
 SCENE_DRAW_PUSH_CONSTANTS(ivec4 regionMin; ivec4 regionMax; ivec4 innerMin; ivec4 innerMax; ivec4 scratchLayout;
                           vec4 ambient;)
@@ -37,13 +38,6 @@ layout(location = 5) flat in vec4 gTriangle01;
 layout(location = 6) flat in vec2 gTriangle2;
 
 layout(location = 0) out vec4 unusedColor;
-
-// Scratch channel `channel` of toroidal voxel t: channels tile the volume, cx per row
-// along X and the rest along Z (see ScratchLayout in voxelization.cpp).
-ivec3 scratchCoord(ivec3 t, int channel) {
-  int n = clipMap.mapSize, cx = draw.scratchLayout.x;
-  return t + ivec3((channel % cx) * n, 0, (channel / cx) * n);
-}
 
 // The area of the triangle (pixel units, counter-clockwise) inside the unit pixel whose
 // lower corner is `pixel`: Sutherland–Hodgman against the pixel's four sides, then the
@@ -157,13 +151,13 @@ void main() {
         int direction = VXGI_DIRECTIONS == 6 ? axis + 3 * s : axis;
         int base = direction * perDirection;
 #if VXGI_AO_MODE
-        imageAtomicAdd(scratch, scratchCoord(t, base), w);
+        imageAtomicAdd(scratch, vxgiScratchCoord(t, base, draw.scratchLayout.x), w);
 #else
         vec3 radiance = frontSide || omni ? front : back;  // omni: the front radiance, every way
-        imageAtomicAdd(scratch, scratchCoord(t, base + 3), w);
-        imageAtomicAdd(scratch, scratchCoord(t, base + 0), radiance.r * emitWeight);
-        imageAtomicAdd(scratch, scratchCoord(t, base + 1), radiance.g * emitWeight);
-        imageAtomicAdd(scratch, scratchCoord(t, base + 2), radiance.b * emitWeight);
+        imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 3, draw.scratchLayout.x), w);
+        imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 0, draw.scratchLayout.x), radiance.r * emitWeight);
+        imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 1, draw.scratchLayout.x), radiance.g * emitWeight);
+        imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 2, draw.scratchLayout.x), radiance.b * emitWeight);
 #endif
       }
     }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <sstream>
@@ -10,34 +11,33 @@ namespace bounce::vxgi {
 
 namespace {
 
-std::optional<glm::vec3> parseVec3(const std::string& text) {
+// Exactly N finite numbers separated by spaces or commas.
+template <size_t N>
+std::optional<std::array<float, N>> parseNumbers(const std::string& text) {
   std::string s = text;
   for (char& c : s)
     if (c == ',') c = ' ';
   std::istringstream in(s);
-  glm::vec3 v;
-  if (!(in >> v.x >> v.y >> v.z)) return std::nullopt;
+  std::array<float, N> v{};
+  for (float& x : v)
+    if (!(in >> x) || !std::isfinite(x)) return std::nullopt;
   std::string rest;
   if (in >> rest) return std::nullopt;
-  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return std::nullopt;
   return v;
 }
 
-// "x y z size": a centre and an edge length > 0, all finite.
+std::optional<glm::vec3> parseVec3(const std::string& text) {
+  const auto v = parseNumbers<3>(text);
+  if (!v) return std::nullopt;
+  return glm::vec3((*v)[0], (*v)[1], (*v)[2]);
+}
+
+// "x y z size": a centre and an edge length > 0.
 std::optional<Aabb> parseCube(const std::string& text) {
-  std::string s = text;
-  for (char& c : s)
-    if (c == ',') c = ' ';
-  std::istringstream in(s);
-  glm::vec3 centre;
-  float size = 0.0f;
-  if (!(in >> centre.x >> centre.y >> centre.z >> size)) return std::nullopt;
-  std::string rest;
-  if (in >> rest) return std::nullopt;
-  if (!std::isfinite(centre.x) || !std::isfinite(centre.y) || !std::isfinite(centre.z) ||
-      !std::isfinite(size) || size <= 0.0f)
-    return std::nullopt;
-  return Aabb{centre - glm::vec3(size * 0.5f), centre + glm::vec3(size * 0.5f)};
+  const auto v = parseNumbers<4>(text);
+  if (!v || (*v)[3] <= 0.0f) return std::nullopt;
+  const glm::vec3 centre((*v)[0], (*v)[1], (*v)[2]), half((*v)[3] * 0.5f);
+  return Aabb{centre - half, centre + half};
 }
 
 }  // namespace

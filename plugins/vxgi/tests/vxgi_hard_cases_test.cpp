@@ -21,13 +21,6 @@ class VxgiHardCases : public RenderFixture {
     c.world[3] = glm::vec4(position, 1.0f);
     return FrameView::fromCamera(c, width, height);
   }
-  /// Checks validation and releases everything, so the test can start() again.
-  void finish() {
-    TearDown();
-    renderer.reset();
-    engine.reset();
-    device.reset();
-  }
   glm::vec3 cameraPosition() const { return engine->scene()->cameras().front().position(); }
 };
 
@@ -70,9 +63,11 @@ TEST_F(VxgiHardCases, TestCubeIsOpaqueThenQuarterThenSixteenthAtCoarserLevels) {
                 radiance);
     EXPECT_NEAR(alpha, expected[level], 0.01f) << "level " << level;
     // The emittance is averaged: the mean radiance of what is opaque stays 1. The view
-    // divides emittance by the stored density, which 8 bits round up from 6.25% to 7.0%
-    // at level 2, so it reads 0.9 there; 12% allows that and the display's 8 bits.
-    EXPECT_NEAR(radiance, 1.0f, 0.12f) << "level " << level;
+    // divides emittance (radiance × density) by the density as stored in 8 bits, so it
+    // reads 1 × exact / stored density: 0.89 at level 2, where 6.25% rounds up to 7.0%.
+    const double density = -std::log(1.0 - std::min(double(expected[level]), 0.9999)) / 9.2103;
+    const double stored = std::round(density * 255.0) / 255.0;
+    EXPECT_NEAR(radiance, density / stored, 0.05) << "level " << level;  // 5%: the display's 8 bits
   }
 }
 
@@ -176,7 +171,8 @@ TEST_F(VxgiHardCases, DegenerateTrianglesAndZeroNormalsLeaveTheFurnaceExact) {
 }
 
 TEST_F(VxgiHardCases, SceneInsideOneVoxelStaysFiniteAndBounded) {
-  // A 10 cm scene in one 1 m voxel, and the same with the automatic voxel size (7 mm).
+  // A 10 cm scene in one 1 m voxel, and the same with the automatic voxel size (7 mm);
+  // a point light beside a 4 cm box on the tile.
   // One bounce of albedo 0.5 can give a surface at most ρ × the largest irradiance any
   // surface receives, whatever the voxels average: E_ind ≤ π · max(direct radiance)
   // (direct radiance = ρ/π · E). Cones that start inside the scene's only voxel must
@@ -190,6 +186,12 @@ TEST_F(VxgiHardCases, SceneInsideOneVoxelStaysFiniteAndBounded) {
     std::printf("%s: indirect %.4f..%.4f, bound π·max direct = %.4f\n", voxel, e.min, e.max, M_PI * d.max);
     EXPECT_GE(e.min, 0.0) << voxel;
     EXPECT_LE(e.max, M_PI * d.max * 1.01) << voxel;
+    // With 7 mm voxels the box's lit side must light the tile (measured 1.39 W/m² at most),
+    // so the bound above is not met by an all-zero image. In one 1 m voxel every cone
+    // starts a voxel away, past the scene, and gathers nothing.
+    if (std::string(voxel) == "r.VXGI.VoxelSize=0") {
+      EXPECT_GT(e.max, 0.1);
+    }
     finish();
   }
 }
