@@ -2,6 +2,7 @@
 // the console panel and from --script files alike, and Tab completes them too.
 
 #include "bounce/core/names.h"
+#include "scene_commands.h"
 #include "viewer.h"
 
 #include <fmt/format.h>
@@ -26,6 +27,24 @@ std::string joined(const std::vector<std::string>& args) { return fmt::format("{
 
 void Viewer::registerCommands() {
   Console& console = engine_->console();
+  registerSceneCommands(*engine_);
+  console.addCommand(
+      {.name = "stat",
+       .help = "stat gpu: prints the last frame's GPU ms per pass, and the culled passes with why.",
+       .run = [this](const std::vector<std::string>& args) {
+         if (args.size() != 1 || !equalsIgnoreCase(args[0], "gpu")) return fail("usage: stat gpu");
+         const RenderedFrame& frame = lastFrame_;
+         ConsoleResult r;
+         r.lines.push_back(fmt::format("frame {:.3f} ms", frame.gpu.frameMilliseconds));
+         for (const gpu::PassTiming& p : frame.gpu.passes) {
+           const CompiledPass* c = frame.graph.find(p.name);
+           r.lines.push_back(
+               fmt::format("  {:<32} {:9.3f} ms  {}", p.name, p.milliseconds, c ? c->reason : ""));
+         }
+         for (const CompiledPass& p : frame.graph.passes)
+           if (!p.executed) r.lines.push_back(fmt::format("  {:<32}    culled     {}", p.name, p.reason));
+         return r;
+       }});
   console.addCommand({.name = "frames",
                       .help = "frames N: show N more frames before the script goes on.",
                       .run = [this](const std::vector<std::string>& args) {

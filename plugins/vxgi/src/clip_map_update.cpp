@@ -79,10 +79,12 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
       committed_->voxelSize0() != layout.voxelSize0())
     return everything("clip-map created");
   if (scene_ != &scene) return everything("new scene");
-  if (settingsKey != settingsKey_) return everything("voxelization settings changed");
+  // Scene edits first: the settings key also hashes per-object flags, and an edit in the
+  // outliner should be reported as the edit it is.
   if (scene.revision(SceneChange::Geometry) != geometry_) return everything("geometry changed");
   if (scene.revision(SceneChange::Material) != materials_) return everything("materials changed");
   if (scene.revision(SceneChange::Light) != lights_) return everything("lights changed");
+  if (settingsKey != settingsKey_) return everything("voxelization settings changed");
 
   std::vector<std::string> why;
   // The anchor moved: each level voxelizes only the slabs that came into view.
