@@ -1,16 +1,22 @@
 // bounce-render-bench: GPU time per render-graph pass for a scene at several output
-// sizes. A benchmark, not a test: it prints medians over several frames (the first
-// frame, which compiles pipelines, is not timed) and the ratio between sizes, measured
-// in one run so the ratios are comparable.
+// sizes and, optionally, under several settings ("variants"). A benchmark, not a test:
+// it prints medians over several frames (the first frame of each size and variant, which
+// compiles pipelines and rebuilds what the settings changed, is not timed) and ratios
+// measured in one run, so they are comparable.
 //
 //   bounce-render-bench [--scene FILE] [--gi NAME] [--sizes 256,512] [--frames N]
-//                       [--set CVAR=VALUE]... [--device NAME]
+//                       [--set CVAR=VALUE]... [--variant "LABEL: CVAR=VALUE ..."]...
+//                       [--device NAME]
+//
+// Passes named NAME.L<n> (one per level of a multi-level structure) are summed into one
+// NAME.L* row (--per-level shows each).
 
 #include "bounce/core/log.h"
 #include "bounce/engine.h"
 #include "renderer/render_stats.h"
 #include "renderer/renderer.h"
 
+#include "bounce-render-bench/bench_variant.h"
 #include "parse_arguments.h"
 
 #include <fmt/format.h>
@@ -19,21 +25,129 @@
 #include <algorithm>
 #include <map>
 
+namespace {
+
+struct Measurement {
+  std::map<std::string, double> passMs;  ///< median per pass (and per NAME.L* group)
+  double frameMs = 0.0;
+  uint64_t persistentBytes = 0;
+};
+
+/// Adds `pass` to `order` after `previous` (the pass before it in the frame that ran it),
+/// so passes only some settings run keep their place in the frame.
+void mergeOrder(std::vector<std::string>& order, const std::vector<std::string>& frame) {
+  auto at = order.begin();
+  for (const std::string& p : frame) {
+    auto found = std::find(order.begin(), order.end(), p);
+    at = found != order.end() ? found + 1 : order.insert(at, p) + 1;
+  }
+}
+
+/// Each family of NAME.L<n> passes as one NAME.L* row (their sum), where its first member was.
+std::vector<std::string> groupLevels(const std::vector<std::string>& passes,
+                                     std::map<std::string, double>& ms) {
+  std::vector<std::string> rows;
+  for (const std::string& p : passes) {
+    const std::optional<std::string> group = bounce::levelGroup(p);
+    if (!group) {
+      rows.push_back(p);
+      continue;
+    }
+    if (std::find(rows.begin(), rows.end(), *group) == rows.end()) rows.push_back(*group);
+    if (auto it = ms.find(p); it != ms.end()) ms[*group] += it->second;
+  }
+  return rows;
+}
+
+/// One table: a row per pass, a column per `columns` entry; sizes get a column with the
+/// ratio of the last to the first, variants rows with each column's ratio to the first.
+void printTable(const std::vector<std::string>& columns, const std::vector<const Measurement*>& cells,
+                const std::vector<std::string>& passes, bool variants) {
+  std::string header = fmt::format("| {:<26} |", "pass (ms)");
+  std::string rule = "|----------------------------|";
+  for (const std::string& c : columns) {
+    header += fmt::format(" {:>12} |", c);
+    rule += "-------------:|";
+  }
+  const bool ratio = !variants && columns.size() > 1;
+  if (ratio) {
+    header += fmt::format(" {:>12} |", "last/first");
+    rule += "-------------:|";
+  }
+  fmt::print("{}\n{}\n", header, rule);
+  auto row = [&](const std::string& name, auto value, const char* format) {
+    std::string line = fmt::format("| {:<26} |", name);
+    for (const Measurement* m : cells) {
+      const std::optional<double> v = value(*m);
+      line += v ? fmt::format(fmt::runtime(format), *v) : std::string("            - |");
+    }
+    if (ratio) {
+      const std::optional<double> a = value(*cells.front()), b = value(*cells.back());
+      line += a && b && *a > 0.0 ? fmt::format(" {:>11.2f}× |", *b / *a) : std::string("            - |");
+    }
+    fmt::print("{}\n", line);
+  };
+  for (const std::string& p : passes)
+    row(
+        p,
+        [&p](const Measurement& m) -> std::optional<double> {
+          auto it = m.passMs.find(p);
+          return it == m.passMs.end() ? std::nullopt : std::optional<double>(it->second);
+        },
+        " {:>12.3f} |");
+  row(
+      "frame", [](const Measurement& m) -> std::optional<double> { return m.frameMs; }, " {:>12.3f} |");
+  if (variants) {
+    const double first = cells.front()->frameMs;
+    row(
+        "frame ÷ first column",
+        [first](const Measurement& m) -> std::optional<double> {
+          return first > 0.0 ? std::optional<double>(m.frameMs / first) : std::nullopt;
+        },
+        " {:>11.3f}× |");
+    row(
+        "persistent memory (MiB)",
+        [](const Measurement& m) -> std::optional<double> {
+          return double(m.persistentBytes) / double(1 << 20);
+        },
+        " {:>12.1f} |");
+  }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  CLI::App app{"bounce-render-bench: per-pass GPU milliseconds at several sizes"};
+  CLI::App app{"bounce-render-bench: per-pass GPU milliseconds at several sizes and settings"};
   bounce::app::acceptUnrealSpellings(app);
   std::string scenePath = "content/cornell_box.gltf", technique, deviceName;
   std::vector<uint32_t> sizes{256, 512};
   uint32_t frames = 10;
-  std::vector<std::string> sets;
+  std::vector<std::string> sets, variantTexts;
   app.add_option("--scene", scenePath, "glTF scene");
   app.add_option("--gi", technique, "GI technique (default: r.GI.Technique from the ini files)");
   app.add_option("--sizes", sizes, "Square output sizes")->delimiter(',');
-  app.add_option("--frames", frames, "Frames per size (the first is not timed)")
+  app.add_option("--frames", frames, "Frames per size and variant (the first is not timed)")
       ->check(CLI::Range(2u, 10000u));
-  app.add_option("--set", sets, "Console variable NAME=VALUE (repeatable)");
+  app.add_option("--set", sets, "Console variable NAME=VALUE for every variant (repeatable)");
+  app.add_option("--variant", variantTexts,
+                 "\"LABEL: CVAR=VALUE ...\": settings measured as one column, restored afterwards "
+                 "(repeatable; the first is the base of the ratios)");
+  bool perLevel = false;
+  app.add_flag("--per-level", perLevel, "One row per NAME.L<n> pass instead of one NAME.L* sum per family");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
   if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-render-bench")) return *status;
+
+  std::vector<bounce::BenchVariant> variants;
+  for (const std::string& text : variantTexts) {
+    std::string error;
+    auto v = bounce::parseBenchVariant(text, &error);
+    if (!v) {
+      fmt::print(stderr, "bounce-render-bench: --variant \"{}\": {}\n", text, error);
+      return 2;
+    }
+    variants.push_back(std::move(*v));
+  }
+  if (variants.empty()) variants.push_back({});
 
   bounce::EngineOptions options;
   options.userIni = std::filesystem::path();  // reproducible: no per-user settings
@@ -57,53 +171,64 @@ int main(int argc, char** argv) {
   const bounce::Camera camera =
       engine.scene()->cameras().empty() ? bounce::Camera{} : engine.scene()->cameras()[0];
 
-  // pass → size → median ms
-  std::vector<std::string> passes;
-  std::map<std::string, std::map<uint32_t, double>> table;
-  std::map<uint32_t, double> frameMs;
+  std::vector<std::string> passes;                             // every pass seen, in execution order
+  std::map<std::pair<size_t, uint32_t>, Measurement> results;  // (variant, size)
   for (uint32_t size : sizes) {
-    bounce::RenderStats stats(device->name(), size, size, engine.technique());
     const bounce::FrameView view = bounce::FrameView::fromCamera(camera, size, size);
-    for (uint32_t f = 0; f < frames; ++f) {
-      bounce::RenderedFrame frame = renderer.render(view, {}, f);
-      if (!frame.gpu.ok()) {
-        fmt::print(stderr, "bounce-render-bench: {}\n", frame.gpu.errors.front());
+    for (size_t v = 0; v < variants.size(); ++v) {
+      std::optional<bounce::AppliedVariant> applied =
+          bounce::applyBenchVariant(engine.cvars(), variants[v], &error);
+      if (!applied) {
+        fmt::print(stderr, "bounce-render-bench: variant '{}': {}\n", variants[v].label, error);
         return 2;
       }
-      if (f > 0) stats.addFrame(frame.gpu);
+      bounce::RenderStats stats(device->name(), size, size, engine.technique());
+      for (uint32_t f = 0; f < frames; ++f) {
+        bounce::RenderedFrame frame = renderer.render(view, {}, f);
+        if (!frame.gpu.ok()) {
+          fmt::print(stderr, "bounce-render-bench: {}\n", frame.gpu.errors.front());
+          return 2;
+        }
+        if (f > 0) stats.addFrame(frame.gpu);
+      }
+      Measurement& m = results[{v, size}];
+      mergeOrder(passes, stats.passes());
+      for (const std::string& p : stats.passes()) m.passMs[p] = stats.passMedian(p);
+      m.frameMs = stats.frameMedian();
+      for (const auto& r : renderer.executor().memory().resources)
+        m.persistentBytes += r.persistent ? r.bytes : 0;
+      applied->restore(engine.cvars());
+      fmt::print(stderr, "bounce-render-bench: {}² {}: {:.3f} ms per frame\n", size,
+                 variants[v].label.empty() ? "(current settings)" : variants[v].label, m.frameMs);
     }
-    for (const std::string& p : stats.passes()) {
-      if (std::find(passes.begin(), passes.end(), p) == passes.end()) passes.push_back(p);
-      table[p][size] = stats.passMedian(p);
-    }
-    frameMs[size] = stats.frameMedian();
   }
+  std::vector<std::string> rows = passes;
+  if (!perLevel)
+    for (auto& [key, m] : results) rows = groupLevels(passes, m.passMs);
 
   fmt::print("{}, scene {}, GI {}: GPU ms per pass, median of {} frames\n\n", device->name(), scenePath,
              engine.technique(), frames - 1);
-  std::string header = fmt::format("| {:<22} |", "pass");
-  std::string rule = "|------------------------|";
-  for (uint32_t s : sizes) {
-    header += fmt::format(" {:>9} |", fmt::format("{}²", s));
-    rule += "-----------|";
-  }
-  if (sizes.size() > 1) {
-    header += fmt::format(" {:>9} |", fmt::format("{}/{}", sizes.back(), sizes.front()));
-    rule += "-----------|";
-  }
-  fmt::print("{}\n{}\n", header, rule);
-  auto row = [&](const std::string& name, const std::map<uint32_t, double>& values) {
-    std::string line = fmt::format("| {:<22} |", name);
-    for (uint32_t s : sizes)
-      line += values.count(s) ? fmt::format(" {:>9.3f} |", values.at(s)) : "         - |";
-    if (sizes.size() > 1) {
-      double a = values.count(sizes.front()) ? values.at(sizes.front()) : 0.0;
-      double b = values.count(sizes.back()) ? values.at(sizes.back()) : 0.0;
-      line += a > 0 ? fmt::format(" {:>8.2f}× |", b / a) : "         - |";
+  if (variants.size() == 1) {
+    std::vector<std::string> columns;
+    std::vector<const Measurement*> cells;
+    for (uint32_t s : sizes) {
+      columns.push_back(fmt::format("{}²", s));
+      cells.push_back(&results[{0, s}]);
     }
-    fmt::print("{}\n", line);
-  };
-  for (const std::string& p : passes) row(p, table[p]);
-  row("frame", frameMs);
+    printTable(columns, cells, rows, /*variants=*/false);
+    return 0;
+  }
+  for (size_t v = 0; v < variants.size(); ++v)
+    fmt::print("- {}: {}\n", variants[v].label, variants[v].describe());
+  for (uint32_t s : sizes) {
+    fmt::print("\n{}²\n\n", s);
+    std::vector<std::string> columns;
+    std::vector<const Measurement*> cells;
+    for (size_t v = 0; v < variants.size(); ++v) {
+      columns.push_back(variants[v].label);
+      cells.push_back(&results[{v, s}]);
+    }
+    printTable(columns, cells, rows, /*variants=*/true);
+  }
   return 0;
 }

@@ -58,8 +58,8 @@ uint64_t VoxelizationPlan::voxels() const {
   return n;
 }
 
-VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& layout,
-                                     uint64_t settingsKey) const {
+VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& layout, uint64_t settingsKey,
+                                     std::string_view forced) const {
   VoxelizationPlan p;
   p.layout = layout;
   p.sceneRevision = scene.revision();
@@ -78,6 +78,7 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
   if (!committed_ || !(committed_->format() == layout.format()) ||
       committed_->voxelSize0() != layout.voxelSize0())
     return everything("clip-map created");
+  if (!forced.empty()) return everything(std::string(forced));
   if (scene_ != &scene) return everything("new scene");
   // Scene edits first: the settings key also hashes per-object flags, and an edit in the
   // outliner should be reported as the edit it is.

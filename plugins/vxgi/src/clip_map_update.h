@@ -10,6 +10,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bounce::vxgi {
@@ -30,8 +31,10 @@ struct VoxelizationPlan {
 class ClipMapUpdate {
  public:
   /// What this frame must voxelize to hold `layout` for `scene` with `settingsKey`
-  /// (a hash of everything besides placement that changes what voxels contain).
-  VoxelizationPlan plan(const Scene& scene, const ClipMapLayout& layout, uint64_t settingsKey) const;
+  /// (a hash of everything besides placement that changes what voxels contain). A
+  /// non-empty `forced` voxelizes everything, giving it as the reason.
+  VoxelizationPlan plan(const Scene& scene, const ClipMapLayout& layout, uint64_t settingsKey,
+                        std::string_view forced = {}) const;
   /// The plan's work reached the GPU: its layout is what the textures now hold.
   void commit(const VoxelizationPlan& plan);
   /// Forget everything (textures were re-created).

@@ -110,7 +110,9 @@ class VxgiPlugin final : public Plugin {
     if (settings_.testCubeBounds()) f.anyVoxelized = true;
     const float decode = format.emittanceFp16 ? 1.0f : 1.0f / settings_.emittanceStorageScale.get();
     addConstantsPass(graph, f.handles, makeConstants(layout, decode));
-    VoxelizationPlan plan = update_.plan(frame.scene, layout, settingsKey(frame));
+    VoxelizationPlan plan =
+        update_.plan(frame.scene, layout, settingsKey(frame),
+                     settings_.forceFullVoxelization.get() ? "forced by r.VXGI.ForceFullVoxelization" : "");
     if (!f.anyVoxelized) {
       for (auto& boxes : plan.boxes) boxes.clear();
       plan.reason = "no material is used with VXGI voxelization and no test cube";

@@ -122,6 +122,12 @@ void VxgiSettings::declare(PluginContext& ctx) {
          if (v.find_first_not_of(" \t") == std::string::npos || parseCube(v)) return "";
          return fmt::format("'{}' is not \"x y z size\" (finite numbers, size > 0)", v);
        }});
+  forceFullVoxelization = ctx.addCVar<bool>(
+      {.name = "r.VXGI.ForceFullVoxelization",
+       .defaultValue = false,
+       .help = "Voxelizes the whole clip-map every frame, as if everything moved: what a fully dynamic scene "
+               "costs (benchmarks compare it with the incremental update in one run).",
+       .category = debug});
   emittanceAmbient = ctx.addCVar<float>(
       {.name = "r.VXGI.EmittanceAmbient",
        .defaultValue = 0.0f,

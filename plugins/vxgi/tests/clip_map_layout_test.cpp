@@ -117,6 +117,21 @@ TEST(ClipMapUpdate, StaticSceneAndStillCameraVoxelizeNothing) {
   EXPECT_EQ(update.plan(scene, layout, 2u).voxels(), 3ull * 32 * 32 * 32);
 }
 
+TEST(ClipMapUpdate, AForcedPlanVoxelizesEverythingEveryFrame) {
+  Scene scene;
+  ClipMapLayout layout = ClipMapLayout::place({.mapSize = 32, .stackLevels = 3}, 0.1f, {0, 0, 0});
+  ClipMapUpdate update;
+  update.commit(update.plan(scene, layout, 1u));
+  for (int frame = 0; frame < 2; ++frame) {
+    VoxelizationPlan forced = update.plan(scene, layout, 1u, "forced");
+    EXPECT_EQ(forced.voxels(), 3ull * 32 * 32 * 32);
+    EXPECT_EQ(forced.reason, "forced");
+    update.commit(forced);
+  }
+  // Without the force the clip-map is up to date again.
+  EXPECT_TRUE(update.plan(scene, layout, 1u).empty());
+}
+
 TEST(ClipMapUpdate, SubVoxelCameraMovesVoxelizeNothing) {
   Scene scene;
   ClipMapFormat f{.mapSize = 32, .stackLevels = 3};
