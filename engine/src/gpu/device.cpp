@@ -106,7 +106,7 @@ int32_t queueFamilyFor(VkPhysicalDevice pd, VkSurfaceKHR surface) {
 }
 
 // Why a device cannot run Bounce, or "" when it can.
-std::string unsuitable(VkPhysicalDevice pd, VkSurfaceKHR surface) {
+std::string unsuitable(VkPhysicalDevice pd) {
   VkPhysicalDeviceProperties p;
   vkGetPhysicalDeviceProperties(pd, &p);
   if (p.apiVersion < VK_API_VERSION_1_3) return "Vulkan 1.3 is required";
@@ -210,7 +210,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
     VkPhysicalDeviceProperties p;
     vkGetPhysicalDeviceProperties(pd, &p);
     names.push_back(p.deviceName);
-    std::string why = unsuitable(pd, d->surface_);
+    std::string why = unsuitable(pd);
     if (!why.empty()) {
       reasons.push_back(fmt::format("{}: {}", p.deviceName, why));
       continue;

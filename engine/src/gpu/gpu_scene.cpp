@@ -1,7 +1,10 @@
 #include "bounce/gpu/gpu_scene.h"
 
+#include "scene/mesh_simplification.h"
+
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bounce::gpu {
@@ -29,6 +32,14 @@ glm::mat4 normalMatrix(const glm::mat4& world) {
   // and invisible, so any finite matrix will do.
   if (!(std::abs(glm::determinant(m)) > 1e-30f)) return glm::mat4(1.0f);
   return glm::mat4(glm::inverseTranspose(m));
+}
+
+/// How much the transform stretches lengths at most (the longest transformed axis); a
+/// non-finite transform gives infinity, so no simplified list is ever chosen for it.
+float largestAxisScale(const glm::mat4& world) {
+  const float s = std::max(
+      {glm::length(glm::vec3(world[0])), glm::length(glm::vec3(world[1])), glm::length(glm::vec3(world[2]))});
+  return std::isfinite(s) ? s : INFINITY;
 }
 
 }  // namespace
@@ -65,6 +76,7 @@ void GpuScene::uploadGeometry(const Scene& scene) {
   struct Range {
     uint32_t firstIndex, indexCount;
     int32_t vertexOffset;
+    std::vector<SimplifiedRange> simplified;
   };
   std::vector<std::vector<Range>> ranges(scene.meshes().size());
   for (size_t m = 0; m < scene.meshes().size(); ++m) {
@@ -79,7 +91,11 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         vertices.push_back(sv);
       }
       indices.insert(indices.end(), p.indices.begin(), p.indices.end());
-      ranges[m].push_back(r);
+      for (SimplifiedIndexList& list : simplifiedIndexLists(p.positions, p.indices, 3)) {
+        r.simplified.push_back({uint32_t(indices.size()), uint32_t(list.indices.size()), list.error});
+        indices.insert(indices.end(), list.indices.begin(), list.indices.end());
+      }
+      ranges[m].push_back(std::move(r));
     }
   }
   vertices_ = makeBuffer(device_, vertices.size() * sizeof(SceneVertex),
@@ -105,6 +121,9 @@ void GpuScene::uploadGeometry(const Scene& scene) {
       d.doubleSided = d.material < scene.materials().size() && scene.materials()[d.material].doubleSided;
       d.objectBounds = mesh.primitives[p].bounds;
       d.worldBounds = d.objectBounds.transformed(inst.world);
+      d.worldScale = largestAxisScale(inst.world);
+      d.simplifiedCount = uint32_t(std::min(r.simplified.size(), d.simplified.size()));
+      std::copy_n(r.simplified.begin(), d.simplifiedCount, d.simplified.begin());
       draws_.push_back(d);
     }
   }
@@ -119,7 +138,10 @@ void GpuScene::uploadInstances(const Scene& scene) {
     data.push_back({inst.world, normalMatrix(inst.world)});
     bounds_.extend(inst.worldBounds);
   }
-  for (GpuDraw& d : draws_) d.worldBounds = d.objectBounds.transformed(scene.instances()[d.instance].world);
+  for (GpuDraw& d : draws_) {
+    d.worldBounds = d.objectBounds.transformed(scene.instances()[d.instance].world);
+    d.worldScale = largestAxisScale(scene.instances()[d.instance].world);
+  }
   if (instances_.size() < std::max<size_t>(data.size() * sizeof(GpuInstance), 64)) {
     instances_ = makeBuffer(device_, data.size() * sizeof(GpuInstance), kStorage, "scene.instances");
     ++generation_;

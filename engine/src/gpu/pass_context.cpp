@@ -118,11 +118,12 @@ void PassContext::endRendering() const {
   renderingActive_ = false;
 }
 
-void PassContext::drawScene(const gpu::Pipeline& pipeline, const gpu::Bindings& common,
-                            const std::function<bool(const gpu::GpuDraw&)>& filter, const void* extraPush,
-                            uint32_t extraPushBytes) const {
+uint64_t PassContext::drawScene(const gpu::Pipeline& pipeline, const gpu::Bindings& common,
+                                const std::function<bool(const gpu::GpuDraw&)>& filter, const void* extraPush,
+                                uint32_t extraPushBytes, float maxWorldError) const {
   const gpu::GpuScene& s = scene();
-  if (s.draws().empty()) return;
+  uint64_t triangles = 0;
+  if (s.draws().empty()) return triangles;
   vkCmdBindPipeline(cmd(), pipeline.bindPoint(), pipeline.handle());
   VkDeviceSize offset = 0;
   VkBuffer vb = s.vertices().handle();
@@ -153,8 +154,11 @@ void PassContext::drawScene(const gpu::Pipeline& pipeline, const gpu::Bindings& 
     push.instance = d.instance;
     push.material = d.material;
     if (pushBytes) vkCmdPushConstants(cmd(), pipeline.layout(), pipeline.stages(), 0, pushBytes, &push);
-    vkCmdDrawIndexed(cmd(), d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
+    const auto [firstIndex, indexCount] = d.indexRange(maxWorldError);
+    vkCmdDrawIndexed(cmd(), indexCount, 1, firstIndex, d.vertexOffset, 0);
+    triangles += indexCount / 3;
   }
+  return triangles;
 }
 
 }  // namespace bounce

@@ -87,7 +87,7 @@ void addConstantsPass(RenderGraph& graph, ClipMapHandles& handles, const ClipMap
 
 void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
                            ClipMapHandles& handles, const VoxelizationPlan& plan,
-                           std::function<void()> committed) {
+                           std::shared_ptr<VoxelizationRecord> record, std::function<void()> committed) {
   Blackboard& bb = graph.blackboard();
   const ClipMapLayout& layout = plan.layout;
   const ClipMapFormat format = layout.format();
@@ -152,6 +152,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     std::vector<Aabb> worldBoxes;
     for (const VoxelBox& box : boxes) worldBoxes.push_back(layout.worldBox(level, box));
     const uint64_t voxels = plan.voxels(level);
+    // Low-detail meshes: the deviation a level tolerates scales with its voxels.
+    const float meshError = settings.voxelizationMeshError.get() * layout.levels()[level].voxelSize;
     const bool levelWork = !boxes.empty();
     auto decide = [levelWork, voxels, reason] {
       return levelWork ? PassDecision::run(fmt::format("{}: {} voxels", reason, voxels))
@@ -211,6 +213,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                      gpu::SamplerKind::ShadowCompare)
             .storage("scratch", scratchHandle);
         ctx.beginRendering({.colors = {{target, std::nullopt}}});
+        uint64_t triangles = 0;
         for (size_t i = 0; i < boxes.size(); ++i) {
           VoxelizePush push{glm::ivec4(boxes[i].min, int32_t(level)),
                             glm::ivec4(boxes[i].max, 0),
@@ -219,15 +222,17 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                             glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
                             glm::vec4(ambient, float(lightCount))};
           const Aabb world = worldBoxes[i];
-          ctx.drawScene(
+          triangles += ctx.drawScene(
               pipeline, common,
               [&](const gpu::GpuDraw& d) {
                 return d.material < voxelized.size() && voxelized[d.material] &&
                        d.worldBounds.overlaps(world);
               },
-              &push, sizeof(push));
+              &push, sizeof(push), meshError);
         }
         ctx.endRendering();
+        if (record->triangles.size() <= level) record->triangles.resize(level + 1);
+        record->triangles[level] = triangles;
       };
     });
 

@@ -11,17 +11,24 @@
 #include <bounce/graph/render_graph.h>
 
 #include <functional>
+#include <memory>
 
 namespace bounce::vxgi {
 
 /// Uploads this frame's clip-map constants; sets handles.constants.
 void addConstantsPass(RenderGraph& graph, ClipMapHandles& handles, const ClipMapConstants& constants);
 
+/// What the voxelization last drew at each level (written at record time, shown by
+/// vxgi.Status).
+struct VoxelizationRecord {
+  std::vector<uint64_t> triangles;  ///< per level, at its last voxelization
+};
+
 /// Voxelizes the plan's boxes level by level, downsamples into coarser levels and the
 /// mip pyramid. `committed` runs (at record time) once the work is recorded.
 void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
                            ClipMapHandles& handles, const VoxelizationPlan& plan,
-                           std::function<void()> committed);
+                           std::shared_ptr<VoxelizationRecord> record, std::function<void()> committed);
 
 /// Diffuse (or ambient-occlusion) and specular tracing into the GI channels.
 void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,

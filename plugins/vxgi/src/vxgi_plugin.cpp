@@ -72,6 +72,7 @@ class VxgiPlugin final : public Plugin {
     mix(settings_.emittanceStorageScale.get());
     mix(frame.setting(settings_.emittanceAmbient));
     mix(settings_.testCube.get());
+    mix(settings_.voxelizationMeshError.get());
     for (const Material& m : frame.scene.materials()) {
       mix(settings_.voxelize.of(m));
       mix(settings_.thickness.of(m));
@@ -118,7 +119,7 @@ class VxgiPlugin final : public Plugin {
       plan.reason = "no material is used with VXGI voxelization and no test cube";
     }
     auto committed = std::make_shared<VoxelizationPlan>(plan);
-    addVoxelizationPasses(graph, frame, settings_, f.handles, plan,
+    addVoxelizationPasses(graph, frame, settings_, f.handles, plan, record_,
                           [this, committed] { update_.commit(*committed); });
     lastPlanReason_ = plan.reason;
     lastLayout_ = layout;
@@ -149,8 +150,9 @@ class VxgiPlugin final : public Plugin {
     if (lastLayout_)
       for (size_t l = 0; l < lastLayout_->levels().size(); ++l) {
         const LevelPlacement& p = lastLayout_->levels()[l];
-        lines.push_back(fmt::format("level {}: voxel {:.4f} m, origin ({}, {}, {})", l, p.voxelSize,
-                                    p.origin.x, p.origin.y, p.origin.z));
+        lines.push_back(fmt::format("level {}: voxel {:.4f} m, origin ({}, {}, {}), {} triangles voxelized",
+                                    l, p.voxelSize, p.origin.x, p.origin.y, p.origin.z,
+                                    l < record_->triangles.size() ? record_->triangles[l] : 0));
       }
     return ConsoleResult{true, lines};
   }
@@ -168,6 +170,7 @@ class VxgiPlugin final : public Plugin {
   std::optional<Frame> frame_;
   std::optional<ClipMapLayout> lastLayout_;
   std::string lastPlanReason_ = "not rendered yet";
+  std::shared_ptr<VoxelizationRecord> record_ = std::make_shared<VoxelizationRecord>();
 };
 
 }  // namespace bounce::vxgi

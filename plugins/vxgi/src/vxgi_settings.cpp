@@ -128,6 +128,17 @@ void VxgiSettings::declare(PluginContext& ctx) {
        .help = "Voxelizes the whole clip-map every frame, as if everything moved: what a fully dynamic scene "
                "costs (benchmarks compare it with the incremental update in one run).",
        .category = debug});
+  voxelizationMeshError = ctx.addCVar<float>(
+      {.name = "r.VXGI.VoxelizationMeshError",
+       .defaultValue = 0.0f,
+       .help =
+           "Low-detail voxelization meshes (seed 001, slide 42): each level voxelizes the coarsest "
+           "simplified version of every mesh (meshoptimizer) whose estimated deviation is at most this many "
+           "of the level's voxels (curved surfaces may sag 2-3× further); 0 voxelizes full detail.",
+       .min = 0.0,
+       .max = 4.0,
+       .ini = {"VXGI", "VxgiVoxelizationMeshError"},
+       .category = clip});
   emittanceAmbient = ctx.addCVar<float>(
       {.name = "r.VXGI.EmittanceAmbient",
        .defaultValue = 0.0f,

@@ -31,8 +31,9 @@ struct VxgiSettings {
   CVarRef<float> emittanceStorageScale, voxelSize, emittanceAmbient;
   CVarRef<int32_t> anchorMode;
   CVarRef<std::string> anchorPosition;
-  CVarRef<std::string> testCube;        ///< the seed's built-in test scene: "x y z size" or empty
-  CVarRef<bool> forceFullVoxelization;  ///< benchmarks: every frame voxelizes every level
+  CVarRef<std::string> testCube;         ///< the seed's built-in test scene: "x y z size" or empty
+  CVarRef<bool> forceFullVoxelization;   ///< benchmarks: every frame voxelizes every level
+  CVarRef<float> voxelizationMeshError;  ///< low-detail meshes: tolerated deviation, in voxels of the level
   // Tracing (post-process-volume settings where users tune them per area).
   CVarRef<bool> diffuseEnable, specularEnable;
   CVarRef<int32_t> diffuseCones, diffuseSparsity;

@@ -9,7 +9,9 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace bounce::gpu {
@@ -41,6 +43,15 @@ struct GpuMaterial {
   glm::ivec4 textures1;  ///< occlusion, specular, specularColor, flags (1: double-sided)
 };
 
+/// A coarser index list of a draw's primitive, in the same index buffer.
+struct SimplifiedRange {
+  uint32_t firstIndex = 0;
+  uint32_t indexCount = 0;
+  /// Deviation from the full mesh, object-space metres (meshoptimizer's estimate; the
+  /// largest sag on curved surfaces can be 2-3× more).
+  float objectError = 0.0f;
+};
+
 /// One draw: a mesh primitive placed by an instance.
 struct GpuDraw {
   uint32_t instance = 0;
@@ -51,6 +62,20 @@ struct GpuDraw {
   bool doubleSided = false;
   Aabb objectBounds;
   Aabb worldBounds;
+  /// Coarser versions of the primitive (meshoptimizer), finest first; passes that
+  /// tolerate a geometric error draw the coarsest within it (PassContext::drawScene).
+  std::array<SimplifiedRange, 3> simplified{};
+  uint32_t simplifiedCount = 0;
+  float worldScale = 1.0f;  ///< the instance's largest axis scale: object error × this = world error
+
+  /// The index range to draw when `maxWorldError` metres of deviation are tolerated.
+  std::pair<uint32_t, uint32_t> indexRange(float maxWorldError) const {
+    std::pair<uint32_t, uint32_t> range{firstIndex, indexCount};
+    for (uint32_t i = 0; i < simplifiedCount; ++i)
+      if (simplified[i].objectError * worldScale <= maxWorldError)
+        range = {simplified[i].firstIndex, simplified[i].indexCount};
+    return range;
+  }
 };
 
 /// Which texture slot of a material (decides the colour space of the view).

@@ -84,10 +84,14 @@ class PassContext {
   /// baseColorTexture, metallicRoughnessTexture, normalTexture, emissiveTexture where the
   /// pipeline declares them) and the push constants {uint instance; uint material;
   /// uint pad[2];} at offset 0, followed by `extraPush` at offset 16 (see scene.glsl's
-  /// SCENE_DRAW_PUSH_CONSTANTS).
-  void drawScene(const gpu::Pipeline& pipeline, const gpu::Bindings& common,
-                 const std::function<bool(const gpu::GpuDraw&)>& filter = {}, const void* extraPush = nullptr,
-                 uint32_t extraPushBytes = 0) const;
+  /// SCENE_DRAW_PUSH_CONSTANTS). A pass that tolerates `maxWorldError` metres of
+  /// geometric deviation (voxelizing at a coarse resolution) draws each primitive's
+  /// coarsest simplified index list within it (GpuDraw::indexRange); 0 draws full detail.
+  /// Returns the number of triangles drawn.
+  uint64_t drawScene(const gpu::Pipeline& pipeline, const gpu::Bindings& common,
+                     const std::function<bool(const gpu::GpuDraw&)>& filter = {},
+                     const void* extraPush = nullptr, uint32_t extraPushBytes = 0,
+                     float maxWorldError = 0.0f) const;
 
   /// The resolved descriptor writes for `bindings` (for custom binding code).
   gpu::DescriptorWrites resolve(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings) const;
