@@ -1,7 +1,10 @@
 #include "clip_map_update.h"
 
 #include <fmt/format.h>
+
 #include <fmt/ranges.h>
+#include <algorithm>
+#include <cmath>
 
 namespace bounce::vxgi {
 
@@ -11,8 +14,25 @@ namespace {
 // box costs more than voxelizing some unchanged voxels again.
 constexpr size_t kMaxBoxesPerLevel = 8;
 
-void addBox(std::vector<VoxelBox>& boxes, const VoxelBox& box) {
+bool overlap(const VoxelBox& a, const VoxelBox& b) {
+  return glm::all(glm::lessThan(a.min, b.max)) && glm::all(glm::lessThan(b.min, a.max));
+}
+
+// Boxes are kept disjoint: each is voxelized by its own draws, so a voxel in two boxes
+// would receive every surface near it twice. Overlapping boxes merge into their bounds.
+void addBox(std::vector<VoxelBox>& boxes, VoxelBox box) {
   if (box.empty()) return;
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (auto it = boxes.begin(); it != boxes.end(); ++it)
+      if (overlap(*it, box)) {
+        box.min = glm::min(box.min, it->min);
+        box.max = glm::max(box.max, it->max);
+        boxes.erase(it);
+        merged = true;
+        break;
+      }
+  }
   boxes.push_back(box);
   if (boxes.size() > kMaxBoxesPerLevel) {
     VoxelBox merged = boxes.front();
@@ -24,21 +44,19 @@ void addBox(std::vector<VoxelBox>& boxes, const VoxelBox& box) {
   }
 }
 
-// A moved object's voxels are re-voxelized with this margin around the voxels its
-// bounds touch. Measured, not derived: with no margin or one voxel, a moved sub-voxel
-// emitter left stale light that a fresh voxelization does not have (the test
-// MovedObjectReVoxelizesItsRegionAndMatchesAFreshStart); with two the results are
-// identical. The cause is still open (see the plugin README).
-constexpr int32_t kMovedObjectMargin = 2;
-
-VoxelBox grown(VoxelBox box, const VoxelBox& level) {
+VoxelBox grown(VoxelBox box, const VoxelBox& level, int32_t margin) {
   if (box.empty()) return box;
-  box.min = glm::max(box.min - kMovedObjectMargin, level.min);
-  box.max = glm::min(box.max + kMovedObjectMargin, level.max);
+  box.min = glm::max(box.min - margin, level.min);
+  box.max = glm::min(box.max + margin, level.max);
   return box;
 }
 
 }  // namespace
+
+int32_t movedObjectMargin(float thickness) {
+  const float behind = std::isfinite(thickness) ? std::clamp(thickness - 1.0f, 0.0f, 64.0f) : 0.0f;
+  return 2 + int32_t(std::ceil(behind));
+}
 
 bool VoxelizationPlan::empty() const {
   for (const auto& level : boxes)
@@ -59,11 +77,12 @@ uint64_t VoxelizationPlan::voxels() const {
 }
 
 VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& layout, uint64_t settingsKey,
-                                     std::string_view forced) const {
+                                     int32_t movedObjectMargin, std::string_view forced) const {
   VoxelizationPlan p;
   p.layout = layout;
   p.sceneRevision = scene.revision();
   p.settingsKey = settingsKey;
+  p.reach = movedObjectMargin;
   p.scene = &scene;
   p.geometry = scene.revision(SceneChange::Geometry);
   p.materials = scene.revision(SceneChange::Material);
@@ -105,8 +124,8 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
       if (c.kind != SceneChange::Transform) continue;
       ++movedObjects;
       for (uint32_t l = 0; l < levels; ++l) {
-        addBox(p.boxes[l], grown(layout.voxelsTouching(l, c.before), layout.levelBox(l)));
-        addBox(p.boxes[l], grown(layout.voxelsTouching(l, c.after), layout.levelBox(l)));
+        addBox(p.boxes[l], grown(layout.voxelsTouching(l, c.before), layout.levelBox(l), movedObjectMargin));
+        addBox(p.boxes[l], grown(layout.voxelsTouching(l, c.after), layout.levelBox(l), movedObjectMargin));
       }
     }
     if (movedObjects) why.push_back(fmt::format("{} object(s) moved", movedObjects));

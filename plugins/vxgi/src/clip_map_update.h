@@ -23,18 +23,33 @@ struct VoxelizationPlan {
   uint64_t geometry = 0, materials = 0, lights = 0;  ///< per-kind scene revisions
   const Scene* scene = nullptr;
   uint64_t settingsKey = 0;
+  /// How many voxels beyond its bounds a surface may write (movedObjectMargin): a box
+  /// must also draw the surfaces that close to it.
+  int32_t reach = 2;
   bool empty() const;
   uint64_t voxels() const;
   uint64_t voxels(uint32_t level) const;
 };
 
+/// How far beyond the voxels a surface's bounds touch its voxelization may write, in
+/// voxels of the level, for a material `thickness` voxels thick (voxelize.frag). Along
+/// the projection axis a fragment covers its pixel's whole depth range on the triangle's
+/// plane: the pixel centre lies within half a pixel in x and y of a point of the
+/// triangle, and depth changes by at most one voxel per pixel along each (the axis is
+/// dominant), so the centre's depth is within 1 voxel of the triangle's, and the ± span
+/// of half the depth change across the pixel adds at most 1 more: 2. Thickness extends
+/// behind the surface by thickness − 1 voxels.
+int32_t movedObjectMargin(float thickness);
+
 class ClipMapUpdate {
  public:
   /// What this frame must voxelize to hold `layout` for `scene` with `settingsKey`
-  /// (a hash of everything besides placement that changes what voxels contain). A
-  /// non-empty `forced` voxelizes everything, giving it as the reason.
+  /// (a hash of everything besides placement that changes what voxels contain). A moved
+  /// object re-voxelizes the voxels its old and new bounds touch, grown by
+  /// `movedObjectMargin` (see movedObjectMargin()). A non-empty `forced` voxelizes
+  /// everything, giving it as the reason.
   VoxelizationPlan plan(const Scene& scene, const ClipMapLayout& layout, uint64_t settingsKey,
-                        std::string_view forced = {}) const;
+                        int32_t movedObjectMargin = 2, std::string_view forced = {}) const;
   /// The plan's work reached the GPU: its layout is what the textures now hold.
   void commit(const VoxelizationPlan& plan);
   /// Forget everything (textures were re-created).

@@ -150,7 +150,14 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     const std::vector<VoxelBox> boxes = plan.boxes[level];
     const VoxelBox inner = layout.innerBox(level);
     std::vector<Aabb> worldBoxes;
-    for (const VoxelBox& box : boxes) worldBoxes.push_back(layout.worldBox(level, box));
+    // The surfaces to draw for a box: those within reach of it, since a surface writes up
+    // to plan.reach voxels beyond its bounds (a thick wall just outside a scrolled-in
+    // slab or a moved object's box still fills voxels inside it).
+    const float reach = float(plan.reach) * layout.levels()[level].voxelSize;
+    for (const VoxelBox& box : boxes) {
+      const Aabb w = layout.worldBox(level, box);
+      worldBoxes.push_back(Aabb{w.min - glm::vec3(reach), w.max + glm::vec3(reach)});
+    }
     const uint64_t voxels = plan.voxels(level);
     // Low-detail meshes: the deviation a level tolerates scales with its voxels.
     const float meshError = settings.voxelizationMeshError.get() * layout.levels()[level].voxelSize;

@@ -111,8 +111,11 @@ class VxgiPlugin final : public Plugin {
     if (settings_.testCubeBounds()) f.anyVoxelized = true;
     const float decode = format.emittanceFp16 ? 1.0f : 1.0f / settings_.emittanceStorageScale.get();
     addConstantsPass(graph, f.handles, makeConstants(layout, decode));
+    float thickest = 1.0f;
+    for (const Material& m : frame.scene.materials())
+      if (settings_.voxelize.of(m)) thickest = std::max(thickest, settings_.thickness.of(m));
     VoxelizationPlan plan =
-        update_.plan(frame.scene, layout, settingsKey(frame),
+        update_.plan(frame.scene, layout, settingsKey(frame), movedObjectMargin(thickest),
                      settings_.forceFullVoxelization.get() ? "forced by r.VXGI.ForceFullVoxelization" : "");
     if (!f.anyVoxelized) {
       for (auto& boxes : plan.boxes) boxes.clear();

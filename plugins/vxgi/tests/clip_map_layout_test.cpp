@@ -123,7 +123,7 @@ TEST(ClipMapUpdate, AForcedPlanVoxelizesEverythingEveryFrame) {
   ClipMapUpdate update;
   update.commit(update.plan(scene, layout, 1u));
   for (int frame = 0; frame < 2; ++frame) {
-    VoxelizationPlan forced = update.plan(scene, layout, 1u, "forced");
+    VoxelizationPlan forced = update.plan(scene, layout, 1u, 2, "forced");
     EXPECT_EQ(forced.voxels(), 3ull * 32 * 32 * 32);
     EXPECT_EQ(forced.reason, "forced");
     update.commit(forced);

@@ -22,6 +22,7 @@ class VxgiHardCases : public RenderFixture {
     return FrameView::fromCamera(c, width, height);
   }
   glm::vec3 cameraPosition() const { return engine->scene()->cameras().front().position(); }
+  void movedObjectMatchesAFreshStart(float thickness);
 };
 
 float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
@@ -222,11 +223,15 @@ TEST_F(VxgiHardCases, SubVoxelCameraStepsDoNotMakeIndirectLightFlicker) {
   EXPECT_LT(worst, 0.05);
 }
 
-TEST_F(VxgiHardCases, MovedObjectReVoxelizesItsRegionAndMatchesAFreshStart) {
-  // Moving the small emitter re-voxelizes only its old and new boxes, and the result
-  // equals voxelizing the moved scene from scratch: no stale voxels where it was. The
-  // scene has no lights, so nothing outside those boxes changes (a moved shadow caster
-  // would also change what lights put on static surfaces elsewhere; see the README).
+// Moving the small emitter re-voxelizes only its old and new boxes, and the result
+// equals voxelizing the moved scene from scratch: no stale voxels where it was. The
+// scene has no lights, so nothing outside those boxes changes (a moved shadow caster
+// would also change what lights put on static surfaces elsewhere; see the README).
+// `thickness`: every material's voxelization thickness, which widens what a surface
+// writes behind itself and so the margin the boxes need (movedObjectMargin).
+void VxgiHardCases::movedObjectMatchesAFreshStart(float thickness) {
+  const std::vector<std::string> settings =
+      with(kSmall, {fmt::format("Material.VxgiVoxelizationThickness={}", thickness)});
   const glm::mat4 shift = glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, -0.3f, 0.4f));
   auto emitter = [&] {
     const auto& instances = engine->scene()->instances();
@@ -234,7 +239,7 @@ TEST_F(VxgiHardCases, MovedObjectReVoxelizesItsRegionAndMatchesAFreshStart) {
       if (instances[i].name == "Emitter") return i;
     return UINT32_MAX;
   };
-  start("content/tests/small_emitter.gltf", kSmall, "VXGI");
+  start("content/tests/small_emitter.gltf", settings, "VXGI");
   RenderedFrame before = render(24, 24, {"indirect-irradiance"});
   const uint32_t id = emitter();
   ASSERT_NE(id, UINT32_MAX);
@@ -252,7 +257,7 @@ TEST_F(VxgiHardCases, MovedObjectReVoxelizesItsRegionAndMatchesAFreshStart) {
   const ImageBuffer incremental = moved.images.at("indirect-irradiance");
   finish();
 
-  start("content/tests/small_emitter.gltf", kSmall, "VXGI");
+  start("content/tests/small_emitter.gltf", settings, "VXGI");
   engine->scene()->setInstanceTransform(emitter(), shift * engine->scene()->instances()[emitter()].world);
   RenderedFrame fresh = render(24, 24, {"indirect-irradiance"});
   const ImageBuffer& reference = fresh.images.at("indirect-irradiance");
@@ -263,11 +268,23 @@ TEST_F(VxgiHardCases, MovedObjectReVoxelizesItsRegionAndMatchesAFreshStart) {
       change = std::max(change, double(std::abs(before.images.at("indirect-irradiance").at(x, y, 1) -
                                                 reference.at(x, y, 1))));
     }
-  std::printf("largest difference to a fresh voxelization %.6f W/m² (the move itself changed up to %.3f)\n",
-              worst, change);
+  std::printf(
+      "thickness %.0f: largest difference to a fresh voxelization %.6f W/m² (the move itself changed up to "
+      "%.3f)\n",
+      thickness, worst, change);
   ASSERT_GT(change, 0.1) << "the move must change the image for the comparison to mean anything";
   // Float atomics add in a different order: allow a rounding-level difference.
   EXPECT_LT(worst, 1e-3 * change);
+}
+
+TEST_F(VxgiHardCases, MovedObjectReVoxelizesItsRegionAndMatchesAFreshStart) {
+  movedObjectMatchesAFreshStart(1.0f);
+}
+
+TEST_F(VxgiHardCases, MovedThickObjectReVoxelizesItsWiderRegion) {
+  // Three voxels thick: surfaces write up to two voxels further behind themselves, and
+  // the margin grows from 2 to 4 voxels to cover it.
+  movedObjectMatchesAFreshStart(3.0f);
 }
 
 }  // namespace
