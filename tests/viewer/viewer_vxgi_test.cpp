@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -87,51 +88,24 @@ Session runSession(const std::string& name, const std::string& script, const std
   return s;
 }
 
-// --- the Cornell box as it ships ----------------------------------------------------------
+/// Screenshot line of a script: "screenshot DIR/NAME".
+using ShotLine = std::function<std::string(const char* name)>;
 
-class ViewerVxgiTest : public ::testing::Test {
+/// One scripted viewer session per suite (per test process under ctest): the suite's
+/// screenshots `Suite::kShots` are removed, `Suite::script(shot)` is written to
+/// `Suite::kScriptFile` and run with kSmallVxgi. Started in SetUpTestSuite rather than at
+/// static initialisation, so listing the tests (ctest's discovery) never starts an X
+/// server; every test skips, with the reason, where none can be started.
+template <class Suite>
+class ScriptedViewerSuite : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    // Started here rather than at static initialisation, so listing the tests (ctest's
-    // discovery) never starts an X server.
     display_ = std::make_unique<test::XDisplay>();
     if (!display_->available()) return;
     const fs::path dir = scratchDir();
-    for (const char* name : kShots) fs::remove(dir / name);
-    auto shot = [&dir](const char* name) { return "screenshot " + (dir / name).string() + "\n"; };
-    std::string script =
-        "ui off\n"
-        "frames 2\n" +
-        shot("vxgi-regular.png") +
-        "# the debug views as typed in the console\n"
-        "r.VXGI.DebugMode 2\n"
-        "frames 1\n" +
-        shot("vxgi-opacity.png") +
-        "r.VXGI.DebugMode 3\n"
-        "frames 1\n" +
-        shot("vxgi-emittance.png") +
-        "# the selector follows the typed line, so leaving the view leaves it\n"
-        "debugview list\n"
-        "debugview off\n"
-        "frames 1\n" +
-        shot("vxgi-after-debugview-off.png") +
-        "# live settings: each change with a screenshot before it as the control\n"
-        "r.VXGI.DebugMode 1\n"
-        "frames 1\n" +
-        shot("vxgi-diffuse-4.png") + "frames 1\n" + shot("vxgi-diffuse-4-again.png") +
-        "r.VXGI.DiffuseCones 16\n"
-        "frames 1\n" +
-        shot("vxgi-diffuse-16.png") +
-        "r.VXGI.DebugMode 2\n"
-        "frames 1\n" +
-        shot("vxgi-opacity-again.png") +
-        "vxgi.Status\n"
-        "r.VXGI.MapSize 64\n"
-        "frames 1\n" +
-        shot("vxgi-opacity-64.png") +
-        "vxgi.Status\n"
-        "quit\n";
-    session_ = runSession("vxgi-session.txt", script, kSmallVxgi);
+    for (const char* name : Suite::kShots) fs::remove(dir / name);
+    const ShotLine shot = [dir](const char* name) { return "screenshot " + (dir / name).string() + "\n"; };
+    session_ = runSession(Suite::kScriptFile, Suite::script(shot), kSmallVxgi);
   }
   static void TearDownTestSuite() { display_.reset(); }
 
@@ -142,16 +116,53 @@ class ViewerVxgiTest : public ::testing::Test {
   static ImageBuffer screenshot(const std::string& name) { return session_.screenshot(name); }
   const std::string& output() const { return session_.result.output; }
 
+  static inline std::unique_ptr<test::XDisplay> display_;
+  static inline Session session_;
+};
+
+// --- the Cornell box as it ships ----------------------------------------------------------
+
+class ViewerVxgiTest : public ScriptedViewerSuite<ViewerVxgiTest> {
+ public:
   static constexpr const char* kShots[] = {
       "vxgi-regular.png",   "vxgi-opacity.png",         "vxgi-emittance.png",  "vxgi-after-debugview-off.png",
       "vxgi-diffuse-4.png", "vxgi-diffuse-4-again.png", "vxgi-diffuse-16.png", "vxgi-opacity-again.png",
       "vxgi-opacity-64.png"};
-  static std::unique_ptr<test::XDisplay> display_;
-  static Session session_;
+  static constexpr const char* kScriptFile = "vxgi-session.txt";
+  static std::string script(const ShotLine& shot) {
+    return "ui off\n"
+           "frames 2\n" +
+           shot("vxgi-regular.png") +
+           "# the debug views as typed in the console\n"
+           "r.VXGI.DebugMode 2\n"
+           "frames 1\n" +
+           shot("vxgi-opacity.png") +
+           "r.VXGI.DebugMode 3\n"
+           "frames 1\n" +
+           shot("vxgi-emittance.png") +
+           "# the selector follows the typed line, so leaving the view leaves it\n"
+           "debugview list\n"
+           "debugview off\n"
+           "frames 1\n" +
+           shot("vxgi-after-debugview-off.png") +
+           "# live settings: each change with a screenshot before it as the control\n"
+           "r.VXGI.DebugMode 1\n"
+           "frames 1\n" +
+           shot("vxgi-diffuse-4.png") + "frames 1\n" + shot("vxgi-diffuse-4-again.png") +
+           "r.VXGI.DiffuseCones 16\n"
+           "frames 1\n" +
+           shot("vxgi-diffuse-16.png") +
+           "r.VXGI.DebugMode 2\n"
+           "frames 1\n" +
+           shot("vxgi-opacity-again.png") +
+           "vxgi.Status\n"
+           "r.VXGI.MapSize 64\n"
+           "frames 1\n" +
+           shot("vxgi-opacity-64.png") +
+           "vxgi.Status\n"
+           "quit\n";
+  }
 };
-
-std::unique_ptr<test::XDisplay> ViewerVxgiTest::display_;
-Session ViewerVxgiTest::session_;
 
 TEST_F(ViewerVxgiTest, OpacityAndEmittanceViewsDifferFromShadingAndFromEachOther) {
   // Exit status 3 would mean Vulkan validation errors; 0 is a clean `quit`.
@@ -231,62 +242,42 @@ std::string statLine(const std::string& output, const std::string& pass, size_t 
   return output.substr(at, output.find('\n', at) - at);
 }
 
-class ViewerVxgiFlagTest : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    display_ = std::make_unique<test::XDisplay>();
-    if (!display_->available()) return;
-    const fs::path dir = scratchDir();
-    for (const char* name : kShots) fs::remove(dir / name);
-    auto shot = [&dir](const char* name) { return "screenshot " + (dir / name).string() + "\n"; };
-    // `material` and `light` are the Scene panel's checkboxes as commands: both edit the
-    // scene through Scene::editMaterial / editLight, as a click does.
-    const std::string script =
-        "ui off\n"
-        "r.VXGI.DebugMode 2\n"
-        "frames 2\n" +
-        shot("flag-opacity.png") +
-        "stat gpu\n"
-        "material Red UsedWithVxgiVoxelization false\n"
-        "frames 1\n"
-        "stat gpu\n" +
-        shot("flag-opacity-red-off.png") +
-        "# a bad value is refused and changes nothing\n"
-        "material Red UsedWithVxgiVoxelization maybe\n"
-        "material Red UsedWithVxgiVoxelization true\n"
-        "frames 1\n" +
-        shot("flag-opacity-red-on.png") +
-        "r.VXGI.DebugMode 3\n"
-        "frames 1\n" +
-        shot("flag-emittance.png") +
-        "# the box has no emissive material: its only flagged light is the ceiling's\n"
-        "light CeilingLight VxgiIndirectLighting false\n"
-        "frames 1\n" +
-        shot("flag-emittance-light-off.png") +
-        "# the control: light that needs no flagged light shows in the same view\n"
-        "r.VXGI.EmittanceAmbient 1\n"
-        "frames 1\n" +
-        shot("flag-emittance-ambient.png") + "quit\n";
-    session_ = runSession("vxgi-flag-session.txt", script, kSmallVxgi);
-  }
-  static void TearDownTestSuite() { display_.reset(); }
-
-  void SetUp() override {
-    if (!display_->available()) GTEST_SKIP() << display_->reason();
-  }
-
-  static ImageBuffer screenshot(const std::string& name) { return session_.screenshot(name); }
-  const std::string& output() const { return session_.result.output; }
-
+class ViewerVxgiFlagTest : public ScriptedViewerSuite<ViewerVxgiFlagTest> {
+ public:
   static constexpr const char* kShots[] = {
       "flag-opacity.png",   "flag-opacity-red-off.png",     "flag-opacity-red-on.png",
       "flag-emittance.png", "flag-emittance-light-off.png", "flag-emittance-ambient.png"};
-  static std::unique_ptr<test::XDisplay> display_;
-  static Session session_;
+  static constexpr const char* kScriptFile = "vxgi-flag-session.txt";
+  static std::string script(const ShotLine& shot) {
+    // `material` and `light` are the Scene panel's checkboxes as commands: both edit the
+    // scene through Scene::editMaterial / editLight, as a click does.
+    return "ui off\n"
+           "r.VXGI.DebugMode 2\n"
+           "frames 2\n" +
+           shot("flag-opacity.png") +
+           "stat gpu\n"
+           "material Red UsedWithVxgiVoxelization false\n"
+           "frames 1\n"
+           "stat gpu\n" +
+           shot("flag-opacity-red-off.png") +
+           "# a bad value is refused and changes nothing\n"
+           "material Red UsedWithVxgiVoxelization maybe\n"
+           "material Red UsedWithVxgiVoxelization true\n"
+           "frames 1\n" +
+           shot("flag-opacity-red-on.png") +
+           "r.VXGI.DebugMode 3\n"
+           "frames 1\n" +
+           shot("flag-emittance.png") +
+           "# the box has no emissive material: its only flagged light is the ceiling's\n"
+           "light CeilingLight VxgiIndirectLighting false\n"
+           "frames 1\n" +
+           shot("flag-emittance-light-off.png") +
+           "# the control: light that needs no flagged light shows in the same view\n"
+           "r.VXGI.EmittanceAmbient 1\n"
+           "frames 1\n" +
+           shot("flag-emittance-ambient.png") + "quit\n";
+  }
 };
-
-std::unique_ptr<test::XDisplay> ViewerVxgiFlagTest::display_;
-Session ViewerVxgiFlagTest::session_;
 
 TEST_F(ViewerVxgiFlagTest, TogglingAMaterialFlagReVoxelizesAndShows) {
   EXPECT_EQ(session_.result.status, 0) << output();

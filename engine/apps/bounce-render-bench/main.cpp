@@ -43,20 +43,23 @@ void mergeOrder(std::vector<std::string>& order, const std::vector<std::string>&
   }
 }
 
-/// Each family of NAME.L<n> passes as one NAME.L* row (their sum), where its first member was.
-std::vector<std::string> groupLevels(const std::vector<std::string>& passes,
-                                     std::map<std::string, double>& ms) {
+/// The table's rows: each family of NAME.L<n> passes as one NAME.L* row, where its first
+/// member was.
+std::vector<std::string> groupedRows(const std::vector<std::string>& passes) {
   std::vector<std::string> rows;
   for (const std::string& p : passes) {
-    const std::optional<std::string> group = bounce::levelGroup(p);
-    if (!group) {
-      rows.push_back(p);
-      continue;
-    }
-    if (std::find(rows.begin(), rows.end(), *group) == rows.end()) rows.push_back(*group);
-    if (auto it = ms.find(p); it != ms.end()) ms[*group] += it->second;
+    const std::string row = bounce::levelGroup(p).value_or(p);
+    if (std::find(rows.begin(), rows.end(), row) == rows.end()) rows.push_back(row);
   }
   return rows;
+}
+
+/// Adds each NAME.L* row's value: the sum of its members that ran.
+void addLevelSums(std::map<std::string, double>& ms) {
+  std::map<std::string, double> sums;
+  for (const auto& [pass, value] : ms)
+    if (auto group = bounce::levelGroup(pass)) sums[*group] += value;
+  ms.insert(sums.begin(), sums.end());
 }
 
 /// One table: a row per pass, a column per `columns` entry; sizes get a column with the
@@ -202,9 +205,9 @@ int main(int argc, char** argv) {
                  variants[v].label.empty() ? "(current settings)" : variants[v].label, m.frameMs);
     }
   }
-  std::vector<std::string> rows = passes;
+  const std::vector<std::string> rows = perLevel ? passes : groupedRows(passes);
   if (!perLevel)
-    for (auto& [key, m] : results) rows = groupLevels(passes, m.passMs);
+    for (auto& [key, m] : results) addLevelSums(m.passMs);
 
   fmt::print("{}, scene {}, GI {}: GPU ms per pass, median of {} frames\n\n", device->name(), scenePath,
              engine.technique(), frames - 1);

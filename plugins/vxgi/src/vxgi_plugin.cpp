@@ -99,9 +99,11 @@ class VxgiPlugin final : public Plugin {
     Frame f;
     f.format = format;
     f.handles = textures_.import(graph);
+    float thickest = 1.0f;  // of the voxelized materials: how far surfaces write past their bounds
     for (const Material& m : frame.scene.materials()) {
       if (!settings_.voxelize.of(m)) continue;
       f.anyVoxelized = true;
+      thickest = std::max(thickest, settings_.thickness.of(m));
       // Specular cones only where a surface can show them: a specular or metallic
       // material smooth enough to pass the threshold.
       if ((m.specularFactor > 0.0f || m.metallicFactor > 0.0f) &&
@@ -111,9 +113,6 @@ class VxgiPlugin final : public Plugin {
     if (settings_.testCubeBounds()) f.anyVoxelized = true;
     const float decode = format.emittanceFp16 ? 1.0f : 1.0f / settings_.emittanceStorageScale.get();
     addConstantsPass(graph, f.handles, makeConstants(layout, decode));
-    float thickest = 1.0f;
-    for (const Material& m : frame.scene.materials())
-      if (settings_.voxelize.of(m)) thickest = std::max(thickest, settings_.thickness.of(m));
     VoxelizationPlan plan =
         update_.plan(frame.scene, layout, settingsKey(frame), movedObjectMargin(thickest),
                      settings_.forceFullVoxelization.get() ? "forced by r.VXGI.ForceFullVoxelization" : "");
