@@ -39,6 +39,8 @@ void main() {
   ConeTracingArguments args = DefaultConeTracingArguments();
   args.coneFactor = coneFactor;
   args.firstSamplePosition = coneOrigin(P, N);
+  args.surfaceNormal = N;
+  args.surfaceDistance = dot(args.firstSamplePosition - P, N);
   args.firstSampleDistance = 1.0;
   args.stepFactor = pc.tracing.y;
   args.maxDistance = pc.tracing.z;

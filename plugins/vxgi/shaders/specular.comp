@@ -27,6 +27,8 @@ void main() {
   args.direction = R;
   args.coneFactor = max(2.0 * alpha, pc.extra.z);
   args.firstSamplePosition = coneOrigin(P, N);
+  args.surfaceNormal = N;
+  args.surfaceDistance = dot(args.firstSamplePosition - P, N);
   args.firstSampleDistance = 1.0;
   args.stepFactor = pc.tracing.y;
   args.maxDistance = pc.tracing.z;

@@ -74,7 +74,7 @@ void VxgiSettings::declare(PluginContext& ctx) {
        .ini = {"VXGI", "bVxgiAmbientOcclusionMode"},
        .category = clip});
   emittanceFp16 = ctx.addCVar<bool>({.name = "r.VXGI.StoreEmittanceInFP16",
-                                     .defaultValue = false,
+                                     .defaultValue = true,
                                      .help = "RGBA16F emittance (HDR) instead of RGBA8 × storage scale.",
                                      .ini = {"VXGI", "bVxgiStoreEmittanceInFP16"},
                                      .category = clip});

@@ -138,8 +138,12 @@ TEST_F(VxgiHardCases, EmitterSmallerThanAVoxelLightsTheFloorBelow) {
   // fragment however small it is, coverage weighting keeps its power, and tracing uses
   // emittance even where the cube's 2–8% opacity rounds to nothing in 8 bits at coarse
   // levels (it read 0 before that). Bounds: at least half the analytic value, and at
-  // most 5× — cone footprints near a tiny source over-weight it (measured 3.6× at 32³,
-  // 3.0× at 64³; 0.3× too far away is within the same band).
+  // most 6×: a cone whose footprint holds the tiny source treats its light as filling
+  // the cone's cross-section, so the floor right under it is over-lit. Keeping each
+  // footprint's filter off the floor (trace_cone.glsl) narrows the upward cones'
+  // footprints to 2/3 of their height, which sharpens that: measured 5.05× at 32³ and
+  // 3.9× at 64³ (3.6× and 3.0× with full-width footprints, which however made the
+  // Cornell box's walls read 4–15% of a path tracer, see vxgi_render_test.cpp).
   for (const char* map : {"r.VXGI.MapSize=32", "r.VXGI.MapSize=64"}) {
     start("content/tests/small_emitter.gltf", with(kSmall, {map}), "VXGI");
     RenderedFrame f = render(32, 32, {"indirect-irradiance"});
@@ -152,7 +156,7 @@ TEST_F(VxgiHardCases, EmitterSmallerThanAVoxelLightsTheFloorBelow) {
     std::printf("%s: floor under the emitter %.3f W/m² (analytic 4), far corner %.3f\n", map, under.mean,
                 corner.mean);
     EXPECT_GT(under.mean, 2.0) << map;
-    EXPECT_LT(under.mean, 20.0) << map;
+    EXPECT_LT(under.mean, 24.0) << map;
     EXPECT_LT(corner.mean, under.mean) << map;
     finish();
   }

@@ -209,7 +209,11 @@ VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
 // A filtered sample for a cone footprint of diameter `diameter` at p: the level whose
 // voxels match the footprint, blended with the next coarser one (quadrilinear), then
 // the mip pyramid beyond the coarsest level. `valid` is false outside the clip-map.
-VxgiSample vxgiSample(vec3 p, float diameter, vec3 r, out bool valid) {
+// Where p lies outside the levels fine enough for `diameter`, the sample comes from the
+// finest level holding p and `diameter` grows to that level's voxel: the footprint the
+// sample's density is per (a caller stepping by the smaller one would count the same
+// coarse voxel's optical depth several times over).
+VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
   float lod = log2(max(diameter, clipMap.voxelSize0) / clipMap.voxelSize0);
   int last = clipMap.levelCount - 1;
   int level = min(int(floor(lod)), last);
@@ -220,7 +224,10 @@ VxgiSample vxgiSample(vec3 p, float diameter, vec3 r, out bool valid) {
   int inside = vxgiFinestLevelAt(p, level);
   valid = inside >= 0;
   if (!valid) return s;  // outside the clip-map
-  if (inside > level) blend = 0.0;  // p is past the finer level's edge: use the coarser alone
+  if (inside > level) {  // p is past the finer level's edge: use the coarser alone
+    blend = 0.0;
+    diameter = vxgiVoxelSize(inside);
+  }
   level = inside;
   // Two samples, blended: the level and the next coarser one (a coarser level holds every
   // point of a finer one), or beyond the clipped levels the coarsest level and the mip

@@ -3,6 +3,7 @@
 //   #include "vxgi/trace_cone.glsl"
 //   ConeTracingArguments args = DefaultConeTracingArguments();
 //   args.direction = R;  args.coneFactor = 0.2;  args.firstSamplePosition = P + N * 0.05;
+//   args.surfaceNormal = N;  args.surfaceDistance = 0.05;  // optional: keeps the filter off P's surface
 //   ConeTracingResults cone = TraceCone(args);
 //   // cone.irradiance, cone.ambient, cone.finalOpacity
 //
@@ -25,6 +26,8 @@ struct ConeTracingArguments {
   float maxDistance;         // metres; the cone stops there
   float stepFactor;          // step length as a fraction of the footprint (≤ 1)
   float ambientRange;        // metres: occlusion beyond this does not count for `ambient`
+  vec3 surfaceNormal;        // unit normal of the surface the cone leaves (zero: none)
+  float surfaceDistance;     // height of firstSamplePosition above that surface, metres
 };
 
 struct ConeTracingResults {
@@ -45,6 +48,8 @@ ConeTracingArguments DefaultConeTracingArguments() {
   a.maxDistance = 1e30;
   a.stepFactor = 0.5;
   a.ambientRange = 1e30;
+  a.surfaceNormal = vec3(0.0);
+  a.surfaceDistance = 0.0;
   return a;
 }
 
@@ -53,6 +58,17 @@ const float VXGI_OPAQUE = 0.995;
 // Bounds the loop on any input (a NaN distance, a zero cone factor): 512 samples reach
 // 2^9 footprints even with step factor 0.1, past the coarsest mip of any clip-map.
 const int VXGI_MAX_STEPS = 512;
+// How far (in footprints, along the surface normal) a sample must be from the surface a
+// cone leaves before its filter may reach it. A trilinear sample of voxels of edge V
+// weighs voxel centres up to V away along each axis, i.e. up to V·|n|₁ along the normal
+// n; the voxels the surface passes through have centres up to V·|n|₁/2 above it. So the
+// footprint at height h may be at most h / (1.5·|n|₁). Without this, the filter of a
+// wide cone (its footprint is as wide as it is far) reaches behind the surface, and
+// there a closed mesh's back faces (a 5 cm wall's far side shares its coarse voxels)
+// stop the cone at once: walls of the Cornell box read 4–15% of a path tracer's one
+// bounce. Limiting only the footprint of the finer of the two blended levels (a strict
+// bound for both would be 3) keeps footprints wide, which tiny bright sources need.
+const float VXGI_SURFACE_CLEARANCE = 1.5;
 
 ConeTracingResults TraceCone(ConeTracingArguments args) {
   ConeTracingResults res;
@@ -67,14 +83,28 @@ ConeTracingResults TraceCone(ConeTracingArguments args) {
   float maxDistance = min(args.maxDistance, 1e30);
   vec3 radiance = vec3(0.0);
   float opacity = 0.0, ambientOpacity = 0.0;
+  // The surface the cone leaves, if the caller named one: a sample at distance t is
+  // surfaceDistance + t·rise above it, and its footprint is kept below that / clearance.
+  vec3 n = safeNormalize(args.surfaceNormal, vec3(0.0));
+  bool leavesSurface = dot(n, n) > 0.5;
+  float rise = max(dot(r, n), 0.0);
+  float clearance = VXGI_SURFACE_CLEARANCE * max(abs(n.x) + abs(n.y) + abs(n.z), 1.0);
+  float surfaceDistance = max(args.surfaceDistance, 0.0);
   for (int i = 0; i < VXGI_MAX_STEPS && t < maxDistance && opacity < VXGI_OPAQUE; ++i) {
+    float cone = coneFactor * t;  // the cone's diameter here
+    float diameter = cone;
+    if (leavesSurface) diameter = min(diameter, (surfaceDistance + t * rise) / clearance);
     // The footprint never shrinks below a finest voxel: finer detail is not stored.
-    float diameter = max(coneFactor * t, v0);
+    diameter = max(diameter, v0);
     vec3 p = args.firstSamplePosition + r * t;
     bool valid;
+    // The sample may widen `diameter` to the voxels of the finest level holding p.
     VxgiSample s = vxgiSample(p, diameter, r, valid);
     if (!valid) break;  // left the clip-map: nothing more to gather
-    float step = stepFactor * diameter;
+    // Steps follow the cone's width even where the footprint is held narrower near the
+    // surface, so that costs no extra samples; the optical depth below counts the whole
+    // step (step / diameter footprints), so occlusion stays right in thick media.
+    float step = stepFactor * max(diameter, cone);
     // Beer–Lambert over this step: the sample's density is optical depth per footprint.
     float alpha = 1.0 - exp(-max(s.density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * (step / diameter));
     // What the step emits towards the cone apex: mean radiance L = emittance / density
