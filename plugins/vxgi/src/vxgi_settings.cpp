@@ -167,7 +167,7 @@ void VxgiSettings::declare(PluginContext& ctx) {
                             .postProcess = "VxgiDiffuseCones",
                             .category = tracing});
   diffuseSparsity = ctx.addCVar<int32_t>({.name = "r.VXGI.DiffuseSparsity",
-                                          .defaultValue = 1,
+                                          .defaultValue = 2,
                                           .help = "Sparse diffuse tracing: trace every k-th pixel in x and "
                                                   "y, then interpolate edge-aware (1, 2, 4).",
                                           .allowed = {1, 2, 4},
