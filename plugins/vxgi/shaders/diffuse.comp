@@ -36,14 +36,8 @@ void main() {
   int cones = clamp(pc.sizes.w, 1, 64);
   float cosHalf = 1.0 - 1.0 / float(cones);
   float coneFactor = 2.0 * sqrt(max(1.0 - cosHalf * cosHalf, 0.0)) / max(cosHalf, 1e-3);
-  ConeTracingArguments args = DefaultConeTracingArguments();
+  ConeTracingArguments args = surfaceConeArguments(P, N);
   args.coneFactor = coneFactor;
-  args.firstSamplePosition = coneOrigin(P, N);
-  args.surfaceNormal = N;
-  args.surfaceDistance = dot(args.firstSamplePosition - P, N);
-  args.firstSampleDistance = 1.0;
-  args.stepFactor = pc.tracing.y;
-  args.maxDistance = pc.tracing.z;
   args.ambientRange = pc.extra.x;
 #if VXGI_AO_MODE
   args.maxDistance = min(args.maxDistance, args.ambientRange);

@@ -23,15 +23,9 @@ void main() {
   vec3 R = reflect(-V, N);
   if (dot(R, N) <= 0.0) R = safeNormalize(R - N * (2.0 * dot(R, N)), N);  // below the horizon: mirror back up
   float alpha = roughness * roughness;
-  ConeTracingArguments args = DefaultConeTracingArguments();
+  ConeTracingArguments args = surfaceConeArguments(P, N);
   args.direction = R;
   args.coneFactor = max(2.0 * alpha, pc.extra.z);
-  args.firstSamplePosition = coneOrigin(P, N);
-  args.surfaceNormal = N;
-  args.surfaceDistance = dot(args.firstSamplePosition - P, N);
-  args.firstSampleDistance = 1.0;
-  args.stepFactor = pc.tracing.y;
-  args.maxDistance = pc.tracing.z;
   ConeTracingResults cone = TraceCone(args);
   imageStore(outTraced, pixel, vec4(sanitize(cone.irradiance * INV_PI * pc.tracing.x, HALF_MAX), 1.0));
 }

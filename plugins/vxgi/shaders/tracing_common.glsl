@@ -51,6 +51,19 @@ vec3 coneOrigin(vec3 P, vec3 N) {
   return P + N * (pc.tracing.w * vxgiVoxelSize(level));
 }
 
+// A cone leaving the surface at P (normal N) with the pass's step and range: it starts
+// off the surface (coneOrigin) and TraceCone keeps its filter off it.
+ConeTracingArguments surfaceConeArguments(vec3 P, vec3 N) {
+  ConeTracingArguments args = DefaultConeTracingArguments();
+  args.firstSamplePosition = coneOrigin(P, N);
+  args.surfaceNormal = N;
+  args.surfaceDistance = dot(args.firstSamplePosition - P, N);
+  args.firstSampleDistance = 1.0;
+  args.stepFactor = pc.tracing.y;
+  args.maxDistance = pc.tracing.z;
+  return args;
+}
+
 #endif  // VXGI_NO_TRACING
 
 #endif
