@@ -8,7 +8,7 @@ packages=(
   cmake ninja-build g++ pkg-config git
   # Vulkan: loader, headers, lavapipe (the default device), validation layers
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
-  glslang-dev spirv-tools libspirv-cross-c-shared-dev
+  glslang-dev glslang-tools spirv-tools libspirv-cross-c-shared-dev
   # libraries
   libglm-dev libtinygltf-dev libtinyexr-dev libstb-dev nlohmann-json3-dev
   libspdlog-dev libfmt-dev libcli11-dev libembree-dev libtbb-dev libmeshoptimizer-dev
