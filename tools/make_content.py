@@ -6,7 +6,9 @@
 
 Every scene is one self-contained .gltf file: its buffer is embedded as a base64 data
 URI. Units are metres and radiometric light units (W/sr for point lights, W/m^2 for
-directional lights, W/(m^2 sr) for emission), as Bounce's scene model expects.
+directional lights, W/(m^2 sr) for emission), as Bounce's scene model expects; each
+asset says so with extras.BounceLightUnits = "radiometric", since KHR_lights_punctual's
+own units (candela, lux) are what a glTF file means otherwise.
 """
 
 import argparse
@@ -168,7 +170,7 @@ class GltfScene:
     def __init__(self, generator_note):
         self.bin = bytearray()
         self.doc = {
-            "asset": {"version": "2.0", "generator": "Bounce tools/make_content.py", "extras": {"note": generator_note}},
+            "asset": {"version": "2.0", "generator": "Bounce tools/make_content.py", "extras": {"note": generator_note, "BounceLightUnits": "radiometric"}},
             "scene": 0,
             "scenes": [{"nodes": []}],
             "nodes": [], "meshes": [], "materials": [], "accessors": [], "bufferViews": [], "buffers": [],

@@ -39,6 +39,8 @@ function(bounce_add_test target)
   if(ARG_SERIAL)
     set(serial TRUE)
   endif()
+  # TIMEOUT: a hang fails its own test within minutes instead of eating CI's 90 (the
+  # slowest GPU test takes about a minute on two cores under load).
   gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60
-    PROPERTIES ENVIRONMENT "BOUNCE_ROOT=${PROJECT_SOURCE_DIR}" RUN_SERIAL ${serial})
+    PROPERTIES ENVIRONMENT "BOUNCE_ROOT=${PROJECT_SOURCE_DIR}" RUN_SERIAL ${serial} TIMEOUT 300)
 endfunction()

@@ -18,7 +18,7 @@ namespace bounce::test {
 class RenderFixture : public ::testing::Test {
  protected:
   /// Creates the engine with `sets` at command-line priority and loads `scene`
-  /// (relative to the repository).
+  /// (absolute, or relative to the repository).
   void start(const std::string& scene, std::vector<std::string> sets = {}, std::string technique = "none") {
     EngineOptions o;
     o.root = BOUNCE_SOURCE_DIR;
@@ -29,7 +29,9 @@ class RenderFixture : public ::testing::Test {
     o.technique = std::move(technique);
     engine = std::make_unique<Engine>(std::move(o));
     ASSERT_TRUE(engine->commandLineErrors().empty()) << engine->commandLineErrors().front();
-    GltfLoadResult r = engine->loadScene(std::string(BOUNCE_SOURCE_DIR) + "/" + scene);
+    const std::filesystem::path path(scene);
+    GltfLoadResult r =
+        engine->loadScene(path.is_absolute() ? path : std::filesystem::path(BOUNCE_SOURCE_DIR) / path);
     ASSERT_TRUE(r.scene || engine->scene()) << r.error;
     std::string error;
     device = gpu::Device::create({.validation = true}, &error);

@@ -85,7 +85,9 @@ class GltfBuilder {
   std::vector<uint8_t> bin;
 
   GltfBuilder() {
-    doc["asset"] = {{"version", "2.0"}};
+    // Tests state light intensities radiometrically (W/sr, W/m²), as the scene model
+    // holds them; a test of KHR_lights_punctual's photometric units erases this key.
+    doc["asset"] = {{"version", "2.0"}, {"extras", {{"BounceLightUnits", "radiometric"}}}};
     doc["scene"] = 0;
     doc["scenes"] = nlohmann::json::array({{{"nodes", nlohmann::json::array()}}});
   }

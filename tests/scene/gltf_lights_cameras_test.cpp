@@ -172,5 +172,165 @@ TEST(GltfCameras, OrthographicCamerasAreSkippedWithAWarning) {
   EXPECT_FALSE(test::warningsWith(r, {"camera 'Ortho'", "orthographic", "skipped"}).empty());
 }
 
+// --- Units: KHR_lights_punctual says candela and lux ------------------------------------
+
+TEST(GltfLightUnits, CandelaAndLuxBecomeWattsAt683LumensPerWatt) {
+  // As Blender 3.4's exporter writes a 500 W point light (500 / 4π × 683 = 27,176 cd), a
+  // 2 W/m² sun (1366 lx) and a spot: no BounceLightUnits key, so the file is photometric.
+  GltfBuilder b;
+  b.doc["asset"] = {{"version", "2.0"}, {"generator", "Khronos glTF Blender I/O v3.4.50"}};
+  const double candela = 500.0 / (4.0 * std::numbers::pi) * 683.0;
+  int point = b.light({{"type", "point"}, {"intensity", candela}});
+  int sun = b.light({{"type", "directional"}, {"intensity", 1366.0}});
+  int spot = b.light({{"type", "spot"}, {"intensity", 683.0}, {"spot", {{"outerConeAngle", 0.5}}}});
+  for (int l : {point, sun, spot}) b.node({{"extensions", {{"KHR_lights_punctual", {{"light", l}}}}}});
+  TempDir dir;
+  GltfLoadResult r = loadLights(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  ASSERT_EQ(r.scene->lights().size(), 3u);
+  EXPECT_NEAR(r.scene->lights()[0].intensity, 500.0 / (4.0 * std::numbers::pi), 1e-3);  // W/sr
+  EXPECT_NEAR(r.scene->lights()[1].intensity, 2.0, 1e-5);                               // W/m²
+  EXPECT_NEAR(r.scene->lights()[2].intensity, 1.0, 1e-6);                               // W/sr
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+}
+
+TEST(GltfLightUnits, RadiometricAssetsKeepTheirValues) {
+  GltfBuilder b;  // the builder marks its assets radiometric
+  int point = b.light({{"type", "point"}, {"intensity", 15.0}});
+  b.node({{"extensions", {{"KHR_lights_punctual", {{"light", point}}}}}});
+  TempDir dir;
+  GltfLoadResult r = loadLights(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  EXPECT_FLOAT_EQ(r.scene->lights()[0].intensity, 15.0f);
+}
+
+TEST(GltfLightUnits, AnUnknownUnitsValueWarnsAndMeansPhotometric) {
+  GltfBuilder b;
+  b.doc["asset"]["extras"]["BounceLightUnits"] = "watts";
+  int point = b.light({{"type", "point"}, {"intensity", 683.0}});
+  b.node({{"extensions", {{"KHR_lights_punctual", {{"light", point}}}}}});
+  TempDir dir;
+  GltfLoadResult r = loadLights(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  EXPECT_FLOAT_EQ(r.scene->lights()[0].intensity, 1.0f);
+  EXPECT_FALSE(test::warningsWith(r, {"asset", "BounceLightUnits", "photometric"}).empty());
+}
+
+TEST(GltfLightUnits, TheBundledContentSaysItIsRadiometric) {
+  GltfLoadResult r = loadGltf(std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box.gltf");
+  ASSERT_TRUE(r.scene) << r.error;
+  ASSERT_FALSE(r.scene->lights().empty());
+  EXPECT_FLOAT_EQ(r.scene->lights()[0].intensity, 15.0f);  // W/sr, tools/make_content.py
+}
+
+// --- Values the extension forbids, and values no real scene has ------------------------
+
+TEST(GltfLights, AnAbsurdIntensityIsClampedWithAWarning) {
+  GltfBuilder b;
+  int bright = b.light({{"name", "Nova"}, {"type", "point"}, {"intensity", 1e30}});
+  b.node({{"extensions", {{"KHR_lights_punctual", {{"light", bright}}}}}});
+  TempDir dir;
+  GltfLoadResult r = loadLights(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  EXPECT_FLOAT_EQ(r.scene->lights()[0].intensity, 1e6f);
+  EXPECT_EQ(test::warningsWith(r, {"light 'Nova'", "1e+30", "clamped"}).size() > 0, true);
+  EXPECT_EQ(r.warnings.size(), 1u) << "one warning per value";
+}
+
+TEST(GltfLights, ARangeOfZeroWarnsAndMeansUnlimitedWhileNoRangeIsSilent) {
+  GltfBuilder b;
+  int zero = b.light({{"name", "Zero"}, {"type", "point"}, {"intensity", 1.0}, {"range", 0.0}});
+  int none = b.light({{"name", "None"}, {"type", "point"}, {"intensity", 1.0}});
+  for (int l : {zero, none}) b.node({{"extensions", {{"KHR_lights_punctual", {{"light", l}}}}}});
+  TempDir dir;
+  GltfLoadResult r = loadLights(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  EXPECT_EQ(r.scene->lights()[0].range, 0.0f);
+  EXPECT_EQ(r.scene->lights()[1].range, 0.0f);
+  EXPECT_FALSE(test::warningsWith(r, {"light 'Zero'", "range 0", "unlimited"}).empty());
+  EXPECT_TRUE(test::warningsWith(r, {"light 'None'"}).empty());
+}
+
+TEST(GltfAsset, AVersionOtherThan2WarnsAndLoads) {
+  GltfBuilder b;
+  b.doc["asset"]["version"] = "3.0";
+  b.triangleMesh("Tri", test::kTriangle, {0, 1, 2});
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  EXPECT_FALSE(test::warningsWith(r, {"asset", "'3.0'", "glTF 2.0"}).empty());
+}
+
+TEST(GltfNodes, GeometryBeyondTheWorldIsSkippedWithAWarning) {
+  GltfBuilder b;
+  b.triangleMesh("Near", test::kTriangle, {0, 1, 2});
+  b.triangleMesh("Huge", test::kTriangle, {0, 1, 2});
+  b.doc["nodes"][1]["scale"] = {1e30, 1e30, 1e30};
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  ASSERT_EQ(r.scene->instances().size(), 1u);
+  EXPECT_EQ(r.scene->instances()[0].name, "Near");
+  EXPECT_FALSE(test::warningsWith(r, {"node 'Huge'", "e+30 m from the origin", "skipped"}).empty());
+  EXPECT_LT(glm::length(r.scene->bounds().size()), 10.0f) << "the scene's bounds stay the visible geometry's";
+}
+
+TEST(GltfCameras, ZnearOutsideItsRangeWarnsAndUsesTheDefault) {
+  for (double znear : {1e19, 1e37, -1.0}) {
+    GltfBuilder b;
+    b.node({{"name", "Eye"},
+            {"camera",
+             b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", znear}}}})}});
+    TempDir dir;
+    GltfLoadResult r = test::loadBuilt(b, dir);
+    ASSERT_TRUE(r.scene) << r.error;
+    ASSERT_EQ(r.scene->cameras().size(), 1u);
+    EXPECT_EQ(r.scene->cameras()[0].znear, Camera{}.znear) << znear;
+    EXPECT_FALSE(test::warningsWith(r, {"znear", "using"}).empty()) << znear;
+  }
+}
+
+TEST(GltfCameras, AZeroScaleKeepsAFiniteViewWithAWarning) {
+  GltfBuilder b;
+  int cam = b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.05}}}});
+  b.node({{"name", "Flat"}, {"translation", {0, 1, 4}}, {"scale", {0, 0, 0}}, {"camera", cam}});
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  ASSERT_EQ(r.scene->cameras().size(), 1u);
+  const glm::mat4 view = r.scene->cameras()[0].view();
+  for (int c = 0; c < 4; ++c)
+    for (int i = 0; i < 4; ++i) ASSERT_TRUE(std::isfinite(view[c][i]));
+  expectVecNear(r.scene->cameras()[0].position(), {0, 1, 4});
+  expectVecNear(r.scene->cameras()[0].forward(), {0, 0, -1});
+  EXPECT_FALSE(test::warningsWith(r, {"node 'Flat'", "scales the camera"}).empty());
+}
+
+TEST(GltfCameras, ScaleDoesNotDistortTheView) {
+  GltfBuilder b;
+  int cam = b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.05}}}});
+  b.node({{"rotation", kLookDown}, {"scale", {2, 3, 0.5}}, {"camera", cam}});
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  const glm::mat3 frame(r.scene->cameras()[0].world);
+  const glm::mat3 identity = glm::transpose(frame) * frame;  // orthonormal: FᵀF = I
+  for (int c = 0; c < 3; ++c)
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(identity[c][i], c == i ? 1.0f : 0.0f, 1e-5f);
+  expectVecNear(r.scene->cameras()[0].forward(), {0, -1, 0});
+  EXPECT_TRUE(r.warnings.empty());
+}
+
+TEST(GltfCameras, ACameraBeyondTheWorldIsSkippedWithAWarning) {
+  GltfBuilder b;
+  int cam = b.camera({{"type", "perspective"}, {"perspective", {{"yfov", 0.5}, {"znear", 0.05}}}});
+  b.node({{"name", "Far"}, {"translation", {1e30, 0, 0}}, {"camera", cam}});
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  EXPECT_TRUE(r.scene->cameras().empty());
+  EXPECT_FALSE(test::warningsWith(r, {"node 'Far'", "camera skipped"}).empty());
+}
+
 }  // namespace
 }  // namespace bounce

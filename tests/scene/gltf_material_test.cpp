@@ -111,6 +111,19 @@ TEST(GltfMaterials, EmissiveStrengthScalesTheEmission) {
   EXPECT_FLOAT_EQ(m.emission().b, 1.0f);
 }
 
+TEST(GltfMaterials, AnAbsurdEmissiveStrengthIsClampedWithAWarning) {
+  GltfBuilder b =
+      sceneWithMaterial({{"name", "Flare"},
+                         {"emissiveFactor", {1.0, 1.0, 1.0}},
+                         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 1e9}}}}}});
+  b.doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir);
+  ASSERT_TRUE(r.scene) << r.error;
+  EXPECT_FLOAT_EQ(r.scene->materials()[0].emissiveStrength, 1e6f);
+  EXPECT_FALSE(test::warningsWith(r, {"material 'Flare'", "1e+09", "clamped"}).empty());
+}
+
 TEST(GltfMaterials, SpecularExtensionFactorsAndTextures) {
   GltfBuilder b = sceneWithMaterial(nlohmann::json::object());
   int tex = b.pngTexture(test::encodePng(1, 1, 4, 8, {1, 2, 3, 4}));

@@ -114,17 +114,17 @@ void ConfigStack::merge(const IniDocument& doc, SetBy level) {
 }
 
 ConfigStack::Section* ConfigStack::section(std::string_view name, bool create) {
-  for (Section& s : sections_)
-    if (equalsIgnoreCase(s.name, name)) return &s;
+  std::string key = toLower(name);
+  if (auto it = sectionIndex_.find(key); it != sectionIndex_.end()) return &sections_[it->second];
   if (!create) return nullptr;
+  sectionIndex_.emplace(std::move(key), sections_.size());
   sections_.push_back({std::string(name), {}, {}});
   return &sections_.back();
 }
 
 const ConfigStack::Section* ConfigStack::section(std::string_view name) const {
-  for (const Section& s : sections_)
-    if (equalsIgnoreCase(s.name, name)) return &s;
-  return nullptr;
+  auto it = sectionIndex_.find(toLower(name));
+  return it == sectionIndex_.end() ? nullptr : &sections_[it->second];
 }
 
 const ConfigStack::Value* ConfigStack::find(std::string_view sectionName, std::string_view key) const {

@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <sstream>
 #include <system_error>
 
 namespace bounce {
@@ -205,12 +204,30 @@ IniDocument IniDocument::parse(std::string_view text, std::string path,
 std::optional<IniDocument> IniDocument::load(const std::string& path,
                                              std::vector<IniDiagnostic>& diagnostics) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) {
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) {
     diagnostics.push_back({path, 0, "file not found"});
     return std::nullopt;
   }
-  if (fs::is_directory(path, ec)) {
+  if (fs::is_directory(status)) {
     diagnostics.push_back({path, 0, "is a folder, not an ini file"});
+    return std::nullopt;
+  }
+  // Devices (/dev/zero never ends), FIFOs (block until a writer comes) and sockets are
+  // not settings files: only a regular file has a size to check before reading.
+  if (!fs::is_regular_file(status)) {
+    diagnostics.push_back({path, 0, "is not a regular file (a device, pipe or socket); not read"});
+    return std::nullopt;
+  }
+  const uintmax_t size = fs::file_size(path, ec);
+  if (ec) {
+    diagnostics.push_back({path, 0, fmt::format("cannot read file: {}", ec.message())});
+    return std::nullopt;
+  }
+  if (size > kMaxFileBytes) {
+    diagnostics.push_back(
+        {path, 0,
+         fmt::format("is {} bytes; ini files larger than {} MiB are refused", size, kMaxFileBytes >> 20)});
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary);
@@ -218,13 +235,15 @@ std::optional<IniDocument> IniDocument::load(const std::string& path,
     diagnostics.push_back({path, 0, fmt::format("cannot open file: {}", std::strerror(errno))});
     return std::nullopt;
   }
-  std::ostringstream content;
-  content << in.rdbuf();
+  // Read at most the cap even if the file grew since it was measured.
+  std::string content(size_t(size), '\0');
+  in.read(content.data(), std::streamsize(size));
   if (in.bad()) {
     diagnostics.push_back({path, 0, "cannot read file"});
     return std::nullopt;
   }
-  return parse(content.str(), path, diagnostics);
+  content.resize(size_t(in.gcount()));
+  return parse(content, path, diagnostics);
 }
 
 void IniDocument::set(std::string_view section, std::string_view key, std::string_view value) {

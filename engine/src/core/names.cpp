@@ -47,6 +47,9 @@ std::vector<std::string> closestNames(std::string_view name, std::span<const std
     const std::string* name;
   };
   std::vector<Scored> scored;
+  // Nobody mistypes a name this long: it is data, not a typo, and comparing it would
+  // cost its length times every candidate's.
+  if (name.size() > kMaxSuggestedNameLength) return {};
   // A typo is plausible within about a third of the name's length (at least 2 edits);
   // candidates that start with what was typed are always offered first.
   const size_t limit = std::max<size_t>(2, name.size() / 3);
@@ -56,6 +59,9 @@ std::vector<std::string> closestNames(std::string_view name, std::span<const std
       scored.push_back({0, &c});
       continue;
     }
+    // The edit distance is at least the difference in length: skip the quadratic work.
+    const size_t lengthGap = c.size() > name.size() ? c.size() - name.size() : name.size() - c.size();
+    if (lengthGap > limit) continue;
     size_t d = editDistance(name, c);
     if (d <= limit) scored.push_back({d, &c});
   }

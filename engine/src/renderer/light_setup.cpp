@@ -61,13 +61,20 @@ LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize) {
           out.shadowMatrices.push_back(glm::perspective(fov, 1.0f, near, far) * view);
           g.params.w = 2.0f * std::tan(0.5f * fov) / size;
         } else {
-          // Cube faces in the order the shader picks them: +X −X +Y −Y +Z −Z.
+          // Cube faces in the order the shader picks them: +X −X +Y −Y +Z −Z. Each face
+          // reaches kSeamTexels past 45°, so a lookup on the face its point belongs to
+          // never filters outside what the face rendered: the 3×3 taps reach 1 texel out
+          // and hardware 2×2 PCF half a texel more. With exactly 90° faces those taps
+          // fell off the edge at the seams and read as lit (bright lines in shadows).
+          // Half-width t in tangent units: (t − 1) = kSeamTexels · (2t / size).
+          constexpr float kSeamTexels = 2.0f;
+          const float halfTangent = 1.0f / std::max(1.0f - 2.0f * kSeamTexels / size, 0.5f);
           static const glm::vec3 kFaces[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                               {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-          const glm::mat4 proj = glm::perspective(glm::radians(90.0f), 1.0f, near, far);
+          const glm::mat4 proj = glm::perspective(2.0f * std::atan(halfTangent), 1.0f, near, far);
           for (const glm::vec3& f : kFaces)
             out.shadowMatrices.push_back(proj * glm::lookAt(l.position, l.position + f, upFor(f)));
-          g.params.w = 2.0f / size;  // tan(45°) = 1
+          g.params.w = 2.0f * halfTangent / size;
         }
       }
     }

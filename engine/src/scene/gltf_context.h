@@ -22,11 +22,23 @@ class LoadError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// How the file states light intensities (asset `extras.BounceLightUnits`).
+enum class LightUnits {
+  Photometric,  ///< KHR_lights_punctual: candela (point, spot) and lux (directional)
+  Radiometric,  ///< W/sr and W/m², as Bounce's scene model holds them
+};
+
+/// Farthest a placed object may be from the origin, in metres. Rendering runs in 32-bit
+/// floats, whose spacing reaches 1 m at 1.7e7 m: beyond this nothing in the scene can be
+/// resolved, and a shadow map fitted to such bounds shadows everything.
+inline constexpr float kMaxWorldCoordinate = 1.0e7f;
+
 struct LoadContext {
   const tinygltf::Model& model;
   std::string file;  ///< the path as the caller gave it; starts every message
   const SceneExtrasSchema* schema = nullptr;
   std::vector<std::string>& warnings;
+  LightUnits lightUnits = LightUnits::Photometric;  ///< set from the asset before nodes are placed
 
   /// Records and logs "<file>: <element>: <message>".
   void warn(std::string_view element, std::string_view message) const;

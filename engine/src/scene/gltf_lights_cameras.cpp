@@ -9,6 +9,79 @@
 #include <numbers>
 
 namespace bounce::gltf {
+namespace {
+
+// Largest radiometric light intensity kept, W/sr or W/m². The sun delivers about
+// 1000 W/m²; lighting divides intensity by d² ≥ 1e-8 m² (lights.glsl), so 1e6 keeps
+// every product many orders below float's 3.4e38 where 1e30 would overflow.
+constexpr double kMaxLightIntensity = 1.0e6;
+
+bool beyondWorld(const glm::vec3& p) {
+  return !(glm::all(glm::lessThanEqual(glm::abs(p), glm::vec3(kMaxWorldCoordinate))));
+}
+
+// Unit vector along `v`, or nullopt when `v` is zero, tiny or not finite.
+std::optional<glm::vec3> unitOrNothing(const glm::vec3& v) {
+  const float length = glm::length(v);
+  if (!(length > 1e-30f) || !std::isfinite(length)) return std::nullopt;
+  return v / length;
+}
+
+// Whether light `index` states a range in the file (tinygltf keeps the raw extension).
+bool rangeGiven(const LoadContext& ctx, int index) {
+  auto ext = ctx.model.extensions.find("KHR_lights_punctual");
+  if (ext == ctx.model.extensions.end() || !ext->second.Has("lights")) return false;
+  const tinygltf::Value& lights = ext->second.Get("lights");
+  return lights.IsArray() && size_t(index) < lights.ArrayLen() && lights.Get(index).Has("range");
+}
+
+// The camera's position and orientation without the node's scale or shear: the view
+// matrix is this frame's inverse, which a zero scale would make singular (NaN) and a
+// non-uniform one would distort. Forward is the node's -Z, up its +Y made perpendicular.
+glm::mat4 rigidCameraFrame(const LoadContext& ctx, std::string_view element, std::string_view nodeName,
+                           const glm::mat4& world) {
+  std::optional<glm::vec3> forward = unitOrNothing(-glm::vec3(world[2]));
+  if (!forward) {
+    ctx.warn(element, fmt::format("node '{}' scales the camera's -Z axis to zero; the camera looks down -Z",
+                                  nodeName));
+    forward = glm::vec3(0, 0, -1);
+  }
+  const glm::vec3 upHint(world[1]);
+  std::optional<glm::vec3> up = unitOrNothing(upHint - glm::dot(upHint, *forward) * *forward);
+  if (!up) {
+    ctx.warn(element, fmt::format("node '{}' scales the camera's +Y axis to zero (or onto -Z); up is chosen",
+                                  nodeName));
+    const glm::vec3 axis = std::abs(forward->y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    up = glm::normalize(axis - glm::dot(axis, *forward) * *forward);
+  }
+  const glm::vec3 right = glm::cross(*forward, *up);
+  glm::mat4 frame(1.0f);
+  frame[0] = glm::vec4(right, 0.0f);
+  frame[1] = glm::vec4(*up, 0.0f);
+  frame[2] = glm::vec4(-*forward, 0.0f);
+  frame[3] = world[3];
+  return frame;
+}
+
+}  // namespace
+
+LightUnits lightUnitsOf(const LoadContext& ctx) {
+  const tinygltf::Value& extras = ctx.model.asset.extras;
+  if (!extras.IsObject() || !extras.Has("BounceLightUnits")) return LightUnits::Photometric;
+  const tinygltf::Value& v = extras.Get("BounceLightUnits");
+  if (v.IsString() && v.Get<std::string>() == "radiometric") return LightUnits::Radiometric;
+  if (v.IsString() && v.Get<std::string>() == "photometric") return LightUnits::Photometric;
+  ctx.warn("asset",
+           "extras.BounceLightUnits must be \"photometric\" or \"radiometric\"; using photometric "
+           "(candela and lux, as KHR_lights_punctual specifies)");
+  return LightUnits::Photometric;
+}
+
+void checkAssetVersion(const LoadContext& ctx) {
+  const std::string& version = ctx.model.asset.version;
+  if (!version.starts_with("2."))
+    ctx.warn("asset", fmt::format("version '{}' is not glTF 2.x; loading it as glTF 2.0", version));
+}
 
 std::optional<Light> convertLight(const LoadContext& ctx, int index, const glm::mat4& world,
                                   std::string_view nodeName) {
@@ -33,15 +106,28 @@ std::optional<Light> convertLight(const LoadContext& ctx, int index, const glm::
   } else if (!l.color.empty()) {
     ctx.warn(element, "color is not 3 finite numbers; using white");
   }
+  const bool photometric = ctx.lightUnits == LightUnits::Photometric;
+  const char* unit = out.type == LightType::Directional ? "W/m²" : "W/sr";
   if (std::isfinite(l.intensity) && l.intensity >= 0.0) {
-    out.intensity = float(l.intensity);
+    const double radiometric = photometric ? l.intensity / kLumensPerWatt : l.intensity;
+    if (radiometric > kMaxLightIntensity) {
+      ctx.warn(element, fmt::format("intensity {:g} ({:g} {}) is beyond any real light; clamped to {:g} {}",
+                                    l.intensity, radiometric, unit, kMaxLightIntensity, unit));
+    }
+    out.intensity = float(std::min(radiometric, kMaxLightIntensity));
   } else {
-    ctx.warn(element, fmt::format("intensity {} is not a finite non-negative number; using 1", l.intensity));
+    ctx.warn(element, fmt::format("intensity {} is not a finite non-negative number; using 1 {}", l.intensity,
+                                  photometric ? (out.type == LightType::Directional ? "lx" : "cd") : unit));
+    if (photometric) out.intensity = float(1.0 / kLumensPerWatt);
   }
-  if (std::isfinite(l.range) && l.range >= 0.0) {
+  if (std::isfinite(l.range) && l.range > 0.0) {
     out.range = float(l.range);
-  } else {
-    ctx.warn(element, fmt::format("range {} is not a finite non-negative number; using unlimited", l.range));
+  } else if (l.range != 0.0 || rangeGiven(ctx, index)) {
+    // tinygltf reads an absent range as 0 too, which means unlimited; only a range the
+    // file states is checked against the extension's rule (range > 0).
+    ctx.warn(element, fmt::format("range {} is not a finite positive number (KHR_lights_punctual requires "
+                                  "range > 0); using unlimited",
+                                  l.range));
   }
 
   if (out.type == LightType::Spot) {
@@ -63,10 +149,14 @@ std::optional<Light> convertLight(const LoadContext& ctx, int index, const glm::
   }
 
   out.position = glm::vec3(world[3]);
-  const glm::vec3 minusZ = -glm::vec3(world[2]);
-  const float length = glm::length(minusZ);
-  if (length > 0.0f && std::isfinite(length)) {
-    out.direction = minusZ / length;
+  if (out.type != LightType::Directional && beyondWorld(out.position)) {
+    ctx.warn(element, fmt::format("node '{}' places the light {:g} m from the origin, beyond the {:g} m that "
+                                  "rendering resolves; light skipped",
+                                  nodeName, glm::length(out.position), double(kMaxWorldCoordinate)));
+    return std::nullopt;
+  }
+  if (auto direction = unitOrNothing(-glm::vec3(world[2]))) {
+    out.direction = *direction;
   } else if (out.type != LightType::Point) {
     ctx.warn(element,
              fmt::format("node '{}' scales its -Z axis to zero; the light points down -Z", nodeName));
@@ -86,16 +176,25 @@ std::optional<Camera> convertCamera(const LoadContext& ctx, int index, const glm
   const tinygltf::PerspectiveCamera& p = c.perspective;
   Camera out;
   out.name = !c.name.empty() ? c.name : std::string(nodeName);
-  out.world = world;
+  const glm::vec3 position(world[3]);
+  if (beyondWorld(position)) {
+    ctx.warn(element,
+             fmt::format("node '{}' places the camera {:g} m from the origin, beyond the {:g} m that "
+                         "rendering resolves; camera skipped",
+                         nodeName, glm::length(position), double(kMaxWorldCoordinate)));
+    return std::nullopt;
+  }
+  out.world = rigidCameraFrame(ctx, element, nodeName, world);
   if (std::isfinite(p.yfov) && p.yfov > 0.0 && p.yfov < std::numbers::pi) {
     out.yfov = float(p.yfov);
   } else {
     ctx.warn(element, fmt::format("yfov {} is outside (0, pi); using {}", p.yfov, out.yfov));
   }
-  if (std::isfinite(p.znear) && p.znear > 0.0) {
+  if (std::isfinite(p.znear) && p.znear > 0.0 && p.znear <= kMaxWorldCoordinate) {
     out.znear = float(p.znear);
   } else {
-    ctx.warn(element, fmt::format("znear {} is not positive; using {}", p.znear, out.znear));
+    ctx.warn(element, fmt::format("znear {} is outside (0, {:g}] m; using {}", p.znear,
+                                  double(kMaxWorldCoordinate), out.znear));
   }
   if (p.zfar != 0.0) {
     if (std::isfinite(p.zfar) && p.zfar > out.znear) {

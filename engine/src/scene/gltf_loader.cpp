@@ -7,6 +7,7 @@
 #include "gltf_context.h"
 #include "gltf_file.h"
 #include "gltf_images.h"
+#include "gltf_lights_cameras.h"
 #include "gltf_materials.h"
 #include "gltf_meshes.h"
 #include "gltf_nodes.h"
@@ -74,6 +75,8 @@ GltfLoadResult loadGltf(const std::string& path, const SceneExtrasSchema* schema
     std::vector<std::string> tinygltfWarnings;
     gltf::readGltfFile(path, model, tinygltfWarnings);
     for (const std::string& w : tinygltfWarnings) ctx.warn("tinygltf", w);
+    gltf::checkAssetVersion(ctx);
+    ctx.lightUnits = gltf::lightUnitsOf(ctx);
     result.scene = buildScene(ctx, path);
   } catch (const gltf::LoadError& e) {
     result.error = e.what();

@@ -62,10 +62,18 @@ void readEmissiveStrength(const LoadContext& ctx, const tinygltf::Material& m, M
   auto it = m.extensions.find("KHR_materials_emissive_strength");
   if (it == m.extensions.end()) return;
   const double strength = numberMember(ctx, it->second, "emissiveStrength", 1.0, element);
+  // Largest strength kept (emission in W/(m²·sr) per unit factor). Lamps and screens
+  // emit 1 to 1e4; 1e6 is far past the 65504 that half-float outputs hold, and beyond it
+  // sums over many emitters and inverse-square falloffs in GI techniques near float's
+  // range. Only the sun's disc (2e7) is brighter, and scenes model it as a light.
+  constexpr double kMaxEmissiveStrength = 1.0e6;
   if (strength < 0.0) {
     ctx.warn(element, fmt::format("emissiveStrength {} is negative; using 0", strength));
+  } else if (strength > kMaxEmissiveStrength) {
+    ctx.warn(element, fmt::format("emissiveStrength {:g} is beyond any real emitter; clamped to {:g}",
+                                  strength, kMaxEmissiveStrength));
   }
-  out.emissiveStrength = float(std::max(strength, 0.0));
+  out.emissiveStrength = float(std::clamp(strength, 0.0, kMaxEmissiveStrength));
 }
 
 void readSpecular(const LoadContext& ctx, const tinygltf::Material& m, Material& out,

@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -100,7 +101,21 @@ void placeNode(const LoadContext& ctx, Scene& scene, SceneMeshes& meshes, int in
     instance.world = world;
     // Negative determinant: the node mirrors the mesh (see SceneMeshes).
     instance.mesh = meshes.get(n.mesh, glm::determinant(glm::mat3(world)) < 0.0f);
-    scene.addInstance(std::move(instance));
+    Aabb placed;
+    for (const MeshPrimitive& primitive : scene.meshes()[instance.mesh].primitives)
+      placed.extend(primitive.bounds.transformed(world));
+    // Largest coordinate rather than distance: squaring 1e30 would overflow to infinity.
+    const glm::vec3 extreme = glm::max(glm::abs(placed.min), glm::abs(placed.max));
+    const float reach = placed.empty() ? 0.0f : std::max({extreme.x, extreme.y, extreme.z});
+    if (!(reach <= kMaxWorldCoordinate)) {
+      // One such instance would stretch the scene's bounds, and with them every shadow
+      // map fitted to them, until the rest of the scene falls inside one texel.
+      ctx.warn(element, fmt::format("places mesh geometry {:g} m from the origin, beyond the {:g} m that "
+                                    "rendering resolves; instance skipped",
+                                    reach, double(kMaxWorldCoordinate)));
+    } else {
+      scene.addInstance(std::move(instance));
+    }
   }
   if (n.camera >= 0) {
     if (size_t(n.camera) >= m.cameras.size()) {

@@ -194,8 +194,19 @@ EmbreeScene::EmbreeScene(const Scene& scene, const std::vector<Texture>& texture
 
 EmbreeScene::~EmbreeScene() = default;
 
+bool EmbreeScene::traceable(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar) {
+  // Embree asserts (or, without assertions, returns garbage) on rays it calls invalid:
+  // origin and direction components within ±FLT_LARGE (1.844e18, embree/common/math),
+  // no NaN anywhere. Such a ray can hit nothing a scene places (kMaxWorldCoordinate).
+  constexpr float kFltLarge = 1.844e18f;
+  const bool inRange = glm::all(glm::lessThanEqual(glm::abs(org), glm::vec3(kFltLarge))) &&
+                       glm::all(glm::lessThanEqual(glm::abs(dir), glm::vec3(kFltLarge)));
+  return inRange && !std::isnan(tNear) && !std::isnan(tFar) && tNear >= 0.0f && tNear <= tFar;
+}
+
 bool EmbreeScene::intersect(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar,
                             RayHit& hit) const {
+  if (!traceable(org, dir, tNear, tFar)) return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh{};
@@ -217,6 +228,7 @@ bool EmbreeScene::intersect(const glm::vec3& org, const glm::vec3& dir, float tN
 }
 
 bool EmbreeScene::occluded(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar) const {
+  if (!traceable(org, dir, tNear, tFar)) return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray{};

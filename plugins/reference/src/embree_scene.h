@@ -57,6 +57,9 @@ class EmbreeScene {
   bool intersect(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar, RayHit& hit) const;
   /// Whether anything lies along org + t·dir for t in [tNear, tFar].
   bool occluded(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar) const;
+  /// Whether Embree accepts the ray; intersect() and occluded() report a miss for any
+  /// other (a camera with an absurd near plane, a NaN that slipped through).
+  static bool traceable(const glm::vec3& org, const glm::vec3& dir, float tNear, float tFar);
 
   const std::vector<GeometryRecord>& geometries() const { return geometries_; }
   /// Diagonal of the world bounds of all kept triangles (0 for an empty scene).

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace bounce {
@@ -60,7 +61,9 @@ class ConfigStack {
     std::vector<std::string> keyOrder;
     std::map<std::string, Value> values;  // lower-case key
   };
-  std::vector<Section> sections_;
+  std::vector<Section> sections_;  // in first-seen order
+  // Lower-case name → index in sections_: a file with many sections loads in linear time.
+  std::unordered_map<std::string, size_t> sectionIndex_;
   std::vector<IniDiagnostic> diagnostics_;
   uint64_t writes_ = 0;  // entries merged so far; numbers Value::sequence
   Section* section(std::string_view name, bool create);

@@ -66,9 +66,9 @@ struct CVarDesc {
   std::vector<T> allowed;              ///< when not empty, the only accepted values
   std::vector<std::string> enumNames;  ///< int only: makes the variable an enum
   CVarFlags flags = CVarFlags::None;
-  IniBinding ini;                                 ///< optional plugin-section ini key
-  std::string postProcess;                        ///< optional post-process-volume setting name
-  std::string category;                           ///< grouping for the viewer, e.g. "Ambient" or "Renderer|Shadows"
+  IniBinding ini;           ///< optional plugin-section ini key
+  std::string postProcess;  ///< optional post-process-volume setting name
+  std::string category;     ///< grouping for the viewer, e.g. "Ambient" or "Renderer|Shadows"
   std::function<std::string(const T&)> validate;  ///< returns an error, or "" when valid
 };
 

@@ -13,6 +13,7 @@
 //
 // Inline comments are not supported (as in Unreal): `Key=1 ; x` has value "1 ; x".
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,7 +45,11 @@ class IniDocument {
   /// Parses text. Bad lines are reported in `diagnostics` and skipped; the rest of the
   /// file still loads.
   static IniDocument parse(std::string_view text, std::string path, std::vector<IniDiagnostic>& diagnostics);
-  /// Reads and parses a file; nullopt (with a diagnostic) when it cannot be read.
+  /// Largest ini file read. Unreal's whole shipped config tree is under 2 MiB; the cap
+  /// leaves room for generated files and stops a device or a runaway file eating memory.
+  static constexpr uintmax_t kMaxFileBytes = uintmax_t(16) << 20;
+  /// Reads and parses a regular file of at most kMaxFileBytes; nullopt (with a
+  /// diagnostic) when it cannot be read.
   static std::optional<IniDocument> load(const std::string& path, std::vector<IniDiagnostic>& diagnostics);
 
   const std::string& path() const { return path_; }

@@ -18,8 +18,12 @@ std::string toLower(std::string_view text);
 /// Edit distance, case-insensitive.
 size_t editDistance(std::string_view a, std::string_view b);
 
+/// Names longer than this get no suggestions (see closestNames).
+inline constexpr size_t kMaxSuggestedNameLength = 256;
+
 /// Up to `maxCount` candidates closest to `name`: prefix matches first, then by edit
-/// distance, dropping candidates too far to be a plausible typo.
+/// distance, dropping candidates too far to be a plausible typo. Costs at most
+/// O(|candidates| · kMaxSuggestedNameLength²), whatever `name` is.
 std::vector<std::string> closestNames(std::string_view name, std::span<const std::string> candidates,
                                       size_t maxCount = 3);
 

@@ -12,7 +12,8 @@ enum class LightType : uint8_t { Directional, Point, Spot };
 /// A KHR_lights_punctual light placed in the world. Units are radiometric:
 /// - directional: `intensity` is the irradiance in W/m² on a surface facing the light;
 /// - point and spot: `intensity` is the radiant intensity in W/sr;
-/// `color` is a linear RGB tint multiplied with the intensity. No photometric conversion.
+/// `color` is a linear RGB tint multiplied with the intensity. The glTF loader converts
+/// KHR_lights_punctual's candela and lux into these (docs/scenes.md).
 struct Light {
   std::string name;
   LightType type = LightType::Point;

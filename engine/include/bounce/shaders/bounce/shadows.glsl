@@ -12,17 +12,24 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   if (layer < 0) return 1.0;
   uint type = uint(light.directionType.w + 0.5);
   vec3 toP = P - light.positionRange.xyz;
-  if (type == LIGHT_POINT) {
-    // Cube face by the major axis, in the order +X −X +Y −Y +Z −Z.
-    vec3 a = abs(toP);
-    int face = (a.x >= a.y && a.x >= a.z) ? (toP.x > 0.0 ? 0 : 1) : (a.y >= a.z ? (toP.y > 0.0 ? 2 : 3) : (toP.z > 0.0 ? 4 : 5));
-    layer += face;
-  }
   // The offset grows with the shadow texel's footprint at P (params.w is its size at
   // 1 m for perspective maps, in metres for directional maps) and with grazing angles.
+  // Half a texel even head-on: a surface facing the light squarely stores the very depth
+  // it looks up, and a zero offset left lit-or-shadowed to rounding (a directional light
+  // down an axis once lit nothing).
   float footprint = type == LIGHT_DIRECTIONAL ? light.params.w : light.params.w * length(toP);
   float cosTheta = saturate(dot(N, L));
-  vec3 offsetP = P + N * (light.params.z + 1.5 * footprint * sqrt(1.0 - cosTheta * cosTheta));
+  vec3 offsetP = P + N * (light.params.z + footprint * (0.5 + 1.5 * sqrt(1.0 - cosTheta * cosTheta)));
+  if (type == LIGHT_POINT) {
+    // Cube face by the major axis of the point looked up (the offset one: choosing by P
+    // sent points near a seam to a face that does not contain them), in the order
+    // +X −X +Y −Y +Z −Z. Faces are a little wider than 90° (light_setup.cpp), so the
+    // 3×3 taps below stay inside the chosen face.
+    vec3 d = offsetP - light.positionRange.xyz;
+    vec3 a = abs(d);
+    int face = (a.x >= a.y && a.x >= a.z) ? (d.x > 0.0 ? 0 : 1) : (a.y >= a.z ? (d.y > 0.0 ? 2 : 3) : (d.z > 0.0 ? 4 : 5));
+    layer += face;
+  }
   vec4 clip = shadowMatrices[layer] * vec4(offsetP, 1.0);
   if (clip.w <= 0.0) return 1.0;
   vec3 ndc = clip.xyz / clip.w;
