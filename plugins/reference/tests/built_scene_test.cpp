@@ -3,6 +3,7 @@
 #include "path_tracer.h"
 
 #include "camera_ray.h"
+#include "embree_scene.h"
 #include "test_scenes.h"
 
 #include "bounce/core/log.h"
@@ -344,6 +345,42 @@ TEST(BuiltScene, DegenerateAndInvalidGeometryDoesNotCrash) {
   const double r2 = glm::dot(glm::dvec3(0, 1, 0) - p, glm::dvec3(0, 1, 0) - p);
   const double expected = 0.5 * 4.0 * (1.0 / std::sqrt(r2)) / (kPi * r2);
   EXPECT_NEAR(acc.radiance().at(2, 3, 0), expected, kNoiseFree * expected);
+}
+
+TEST(BuiltScene, ACameraWithAnAbsurdNearPlaneRendersWithoutCrashing) {
+  // A scene built in code skips the loader's znear check: camera rays then start 1e19 m
+  // and more away, past the ±1.844e18 Embree accepts (it aborted on its ray.valid()
+  // assertion). Such rays miss; the image is black but finite.
+  for (float znear : {1e19f, 1e30f, 1e37f}) {
+    Scene scene = planeScene(lambert(glm::vec3(0.5f)));
+    Camera camera = scene.cameras()[0];
+    camera.znear = znear;
+    scene.addCamera(camera);
+    scene.addLight(pointLight({0, 1, 0}, 4.0f));
+    PathTracer tracer(scene);
+    const FrameView view = FrameView::fromCamera(scene.cameras()[1], 8, 8);
+    Accumulation acc(view.width, view.height);
+    ASSERT_NO_THROW(tracer.addSamples(acc, view, 1, {}));
+    EXPECT_EQ(acc.radiance().nonFiniteCount(), 0u) << znear;
+  }
+}
+
+TEST(BuiltScene, EmbreeIsNeverHandedARayItCallsInvalid) {
+  Scene scene = planeScene(lambert(glm::vec3(0.5f)));
+  const EmbreeScene embree(scene, {});
+  const glm::vec3 down(0, -1, 0);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE(EmbreeScene::traceable({0, 1, 0}, down, 0.0f, 1e30f));
+  EXPECT_FALSE(EmbreeScene::traceable({0, 1e19f, 0}, down, 0.0f, 1e30f));
+  EXPECT_FALSE(EmbreeScene::traceable({0, 1, 0}, {0, -1e19f, 0}, 0.0f, 1e30f));
+  EXPECT_FALSE(EmbreeScene::traceable({nan, 1, 0}, down, 0.0f, 1e30f));
+  EXPECT_FALSE(EmbreeScene::traceable({0, 1, 0}, down, nan, 1e30f));
+  EXPECT_FALSE(EmbreeScene::traceable({0, 1, 0}, down, 2.0f, 1.0f));
+  // The guard answers "miss" (and "not occluded") instead of tracing.
+  RayHit hit;
+  EXPECT_TRUE(embree.intersect({0, 1, 0}, down, 0.0f, 1e30f, hit));
+  EXPECT_FALSE(embree.intersect({0, 1e19f, 0}, down, 0.0f, 1e30f, hit));
+  EXPECT_FALSE(embree.occluded({0, 1e19f, 0}, down, 0.0f, 1e30f));
 }
 
 TEST(BuiltScene, NonFiniteSamplesAreDroppedCountedAndLoggedOnce) {
