@@ -194,11 +194,14 @@ TEST_P(ViewerBadInput, ExitsWithStatusTwoAndOneClearLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     Viewer, ViewerBadInput,
-    ::testing::Values(BadInput{"MissingScene", "--scene content/no_such_scene.gltf", "no_such_scene.gltf"},
-                      BadInput{"MissingScript", "--script /nonexistent/script.txt",
-                               "--script /nonexistent/script.txt"},
-                      BadInput{"UnknownCvar", "--set r.NoSuchThing=1", "r.NoSuchThing"},
-                      BadInput{"BadOption", "--frobnicate", "frobnicate"}),
+    ::testing::Values(
+        BadInput{"MissingScene", "--scene content/no_such_scene.gltf", "no_such_scene.gltf"},
+        BadInput{"MissingScript", "--script /nonexistent/script.txt", "--script /nonexistent/script.txt"},
+        BadInput{"UnknownCvar", "--set r.NoSuchThing=1", "r.NoSuchThing"},
+        BadInput{"RefusedValue", "--set r.Shadow.MapSize=3", "r.Shadow.MapSize: 3 is not one of"},
+        BadInput{"UnknownPlugin", "--enable-plugin NoSuchPlugin",
+                 "--enable-plugin NoSuchPlugin: no such plugin"},
+        BadInput{"BadOption", "--frobnicate", "frobnicate"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 }  // namespace

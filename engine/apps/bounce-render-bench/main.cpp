@@ -163,13 +163,13 @@ int main(int argc, char** argv) {
   if (auto status = bounce::app::commandLineFailure(engine, "bounce-render-bench")) return *status;
   bounce::GltfLoadResult loaded = engine.loadScene(scenePath);
   if (!engine.scene()) {
-    fmt::print(stderr, "bounce-render-bench: {}\n", loaded.error);
+    bounce::app::printError("bounce-render-bench", loaded.error);
     return 2;
   }
   std::string error;
   auto device = bounce::gpu::Device::create({.preferredDevice = deviceName}, &error);
   if (!device) {
-    fmt::print(stderr, "bounce-render-bench: {}\n", error);
+    bounce::app::printError("bounce-render-bench", error);
     return 1;
   }
   bounce::Renderer renderer(engine, *device);
@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
       for (uint32_t f = 0; f < frames; ++f) {
         bounce::RenderedFrame frame = renderer.render(view, {}, f);
         if (!frame.gpu.ok()) {
-          fmt::print(stderr, "bounce-render-bench: {}\n", frame.gpu.errors.front());
+          bounce::app::printError("bounce-render-bench", frame.gpu.errors.front());
           return 2;
         }
         if (f > 0) stats.addFrame(frame.gpu);
