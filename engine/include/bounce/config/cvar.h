@@ -150,7 +150,8 @@ class CVar {
   /// (refused or clamped, as its RangePolicy says), its allowed values and its validate
   /// callback. Messages name the variable and the value ("r.X: 3 is not one of 1, 2, 4").
   CheckedValue check(CVarValue value) const;
-  /// Checks text: parse(), then check().
+  /// Checks text: parse(), then check(); text that is a number too wide for the type
+  /// ("3e9" for an int) goes to checkNumber instead (see wideNumber).
   CheckedValue checkText(std::string_view text) const;
   /// Checks a number that arrives as a double (post-process volumes, JSON) before it is
   /// narrowed to the variable's type, so 3e9 for an int is out of range rather than a
