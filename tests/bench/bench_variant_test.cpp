@@ -54,6 +54,28 @@ TEST(BenchVariant, AppliesThenRestoresAndRefusesBadValuesWholly) {
   EXPECT_EQ(b.get(), 2);
 }
 
+TEST(BenchVariant, ValuesGoThroughTheVariablesValidator) {
+  // --variant values are checked as every other write is: a value outside the allowed
+  // list is refused, and so is one the declaration would clamp (a benchmark column must
+  // measure what it says), including a number too large for an int.
+  CVarRegistry cvars;
+  CVarRef<int32_t> sparsity = cvars.add<int32_t>({.name = "r.S", .defaultValue = 2, .allowed = {1, 2, 4}});
+  CVarRef<int32_t> cones = cvars.add<int32_t>(
+      {.name = "r.C", .defaultValue = 8, .min = 1, .max = 32, .outOfRange = RangePolicy::Clamp});
+  std::string error;
+  EXPECT_FALSE(applyBenchVariant(cvars, *parseBenchVariant("a: r.S=0", &error), &error));
+  EXPECT_NE(error.find("r.S=0: r.S: 0 is not one of 1, 2, 4"), std::string::npos) << error;
+  EXPECT_FALSE(applyBenchVariant(cvars, *parseBenchVariant("b: r.S=3", &error), &error));
+  EXPECT_NE(error.find("3 is not one of"), std::string::npos) << error;
+  EXPECT_FALSE(applyBenchVariant(cvars, *parseBenchVariant("c: r.C=3e9", &error), &error));
+  EXPECT_NE(error.find("r.C: 3000000000 is outside [1, 32]; clamped to 32"), std::string::npos) << error;
+  EXPECT_EQ(sparsity.get(), 2);
+  EXPECT_EQ(cones.get(), 8);
+  EXPECT_TRUE(applyBenchVariant(cvars, *parseBenchVariant("d: r.S=4 r.C=16", &error), &error)) << error;
+  EXPECT_EQ(sparsity.get(), 4);
+  EXPECT_EQ(cones.get(), 16);
+}
+
 TEST(BenchVariant, LevelPassesGroupByFamily) {
   EXPECT_EQ(levelGroup("VXGI.Voxelize.L0"), "VXGI.Voxelize.L*");
   EXPECT_EQ(levelGroup("VXGI.Voxelize.L12"), "VXGI.Voxelize.L*");

@@ -3,6 +3,8 @@
 
 #include "configuration_sweep.h"
 
+#include "bounce/core/log.h"
+
 #include <gtest/gtest.h>
 
 namespace bounce::bench {
@@ -51,6 +53,28 @@ TEST(ConfigurationSweep, ATechniqueWithoutKnobsHasOnlyItsDefaults) {
   std::vector<Configuration> c = configurationsFor(*engine, "TestDependent", false);
   ASSERT_EQ(c.size(), 1u);
   EXPECT_TRUE(c[0].isDefault);
+}
+
+TEST(ConfigurationSweep, KnobValuesTheVariableRefusesAreNotSweptAndSaySo) {
+  // Knob values go through the variable's validator as a -set would: text for an int and
+  // a number beyond int32 are refused (not swept, one warning each); good ones stay.
+  auto engine = testEngine();
+  engine->qualityKnobs().add(
+      {.cvar = "test.Good.Value", .values = {"abc", "3e9", "2.5", "2", "2.0"}, .label = "bad"},
+      OwnerId(12345), "TestKnobs");
+  log::Capture log;
+  std::vector<Configuration> c = configurationsFor(*engine, "TestKnobs", false);
+  ASSERT_EQ(c.size(), 2u);  // defaults, then value=2 once ("2.0" is the same number)
+  EXPECT_EQ(c[1].settings[0], (std::pair<std::string, std::string>{"test.Good.Value", "2"}));
+  EXPECT_EQ(log.count(log::Level::Warning,
+                      "quality knob 'bad': test.Good.Value: 'abc' is not an integer; not swept"),
+            1u)
+      << log.joined();
+  EXPECT_EQ(log.count(log::Level::Warning, "test.Good.Value: 3000000000 is not a 32-bit integer; not swept"),
+            1u)
+      << log.joined();
+  EXPECT_EQ(log.count(log::Level::Warning, "'2.5' is not an integer; not swept"), 1u) << log.joined();
+  EXPECT_EQ(log.count(log::Level::Warning), 3u) << log.joined();
 }
 
 }  // namespace

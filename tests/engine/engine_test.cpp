@@ -253,5 +253,84 @@ TEST(CommandLine, UnrealSingleDashOptionsBecomeLongOptions) {
                                       "--SET", "r.Y=a=b", "scene.gltf"}));
 }
 
+TEST(Engine, BadValuesInIniOptionsAreCommandLineErrorsUnlessKeepGoing) {
+  // The same values through -set exit with status 2; through -ini they must too.
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "[SystemSettings]\n");
+  p.write("bad.ini",
+          "[SystemSettings]\n"
+          "r.Bloom.Intensity=nan\n"
+          "r.Shadow.MapSize=-1\n"
+          "test.Good.Value=abc\n"
+          "[MaterialDefaults]\n"
+          "UsedWithTestGood=maybe\n"
+          "[TestGood]\n"
+          "GodValue=1\n");
+  const std::string file = (p.root() / "bad.ini").string();
+  EngineOptions o = optionsFor(p);
+  o.iniFiles = {file};
+  {
+    log::Capture log;
+    Engine e(o);
+    std::string all;
+    for (const std::string& s : e.commandLineErrors()) all += s + "\n";
+    EXPECT_EQ(e.commandLineErrors().size(), 5u) << all;
+    EXPECT_NE(all.find(file + ":2: r.Bloom.Intensity: 'nan' is not a finite number"), std::string::npos)
+        << all;
+    EXPECT_NE(all.find(file + ":3: r.Shadow.MapSize: -1 is not one of"), std::string::npos) << all;
+    EXPECT_NE(all.find(file + ":4: test.Good.Value: 'abc' is not an integer"), std::string::npos) << all;
+    EXPECT_NE(all.find(file + ":6: Material.UsedWithTestGood: 'maybe' is not a bool"), std::string::npos)
+        << all;
+    EXPECT_NE(all.find(file + ":8: unknown key 'GodValue' in [TestGood]"), std::string::npos) << all;
+    EXPECT_EQ(e.cvars().find("test.Good.Value")->getInt(), 7);  // refused values change nothing
+  }
+  o.keepGoing = true;
+  {
+    log::Capture log;
+    Engine e(o);
+    EXPECT_TRUE(e.commandLineErrors().empty()) << e.commandLineErrors().front();
+    // Still reported, and the defaults are used.
+    EXPECT_EQ(log.count(log::Level::Error, file + ":2: r.Bloom.Intensity"), 1u) << log.joined();
+    EXPECT_EQ(e.cvars().find("test.Good.Value")->getInt(), 7);
+  }
+  // The same file as the user ini: logged errors, not command-line errors (the user did
+  // not name it on this command line).
+  EngineOptions user = optionsFor(p);
+  user.userIni = p.root() / "bad.ini";
+  log::Capture log;
+  Engine e(user);
+  EXPECT_TRUE(e.commandLineErrors().empty()) << e.commandLineErrors().front();
+  EXPECT_GE(log.count(log::Level::Error, "r.Bloom.Intensity: 'nan' is not a finite number"), 1u)
+      << log.joined();
+}
+
+TEST(Engine, RequestedPluginsThatFailToStartAreCommandLineErrorsUnlessKeepGoing) {
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "[SystemSettings]\n");
+  EngineOptions o = optionsFor(p);
+  o.enablePlugins = {"TestFailing", "TestNoSuchPlugin"};
+  log::Capture log;
+  {
+    Engine e(o);
+    std::string all;
+    for (const std::string& s : e.commandLineErrors()) all += s + "\n";
+    ASSERT_EQ(e.commandLineErrors().size(), 2u) << all;
+    EXPECT_NE(all.find("--enable-plugin TestFailing: the plugin failed to load"), std::string::npos) << all;
+    EXPECT_NE(all.find("--enable-plugin TestNoSuchPlugin: no such plugin"), std::string::npos) << all;
+  }
+  o.enablePlugins = {"TestFailing"};
+  o.keepGoing = true;
+  Engine e(o);
+  EXPECT_TRUE(e.commandLineErrors().empty()) << e.commandLineErrors().front();
+  EXPECT_FALSE(e.plugins().isLoaded("TestFailing"));
+  // A plugin that is enabled by default and loads is no error; neither is one the same
+  // command line disables.
+  o.keepGoing = false;
+  o.enablePlugins = {"TestGood", "TestFailing"};
+  o.disablePlugins = {"TestFailing"};
+  Engine quiet(o);
+  EXPECT_TRUE(quiet.commandLineErrors().empty()) << quiet.commandLineErrors().front();
+}
+
 }  // namespace
 }  // namespace bounce

@@ -127,18 +127,25 @@ TEST_F(PostProcessBlend, BadSettingsWarnAndAreIgnored) {
   PostProcessVolume v = volume("Room", 0, true);
   v.settings["Intensty"] = 5.0;               // typo
   v.settings["Cones"] = std::string("many");  // wrong type
-  v.settings["Intensity"] = 1.0e9;            // out of range: clamped to the variable's range
+  v.settings["Intensity"] = 1.0e9;            // out of range: refused, as -set would (RangePolicy::Reject)
   s.addPostProcessVolume(v);
   std::vector<std::string> warnings;
   PostProcessSettings pp = PostProcessSettings::blend(s, cvars, {0, 0, 0}, &warnings);
-  ASSERT_EQ(warnings.size(), 2u);
-  std::string all = warnings[0] + "\n" + warnings[1];
+  ASSERT_EQ(warnings.size(), 3u);
+  std::string all = warnings[0] + "\n" + warnings[1] + "\n" + warnings[2];
   EXPECT_NE(all.find("post-process volume 'Room': unknown setting 'Intensty' (did you mean 'Intensity'"),
             std::string::npos)
       << all;
-  EXPECT_NE(all.find("post-process volume 'Room': Cones: not a valid int"), std::string::npos) << all;
+  EXPECT_NE(all.find("post-process volume 'Room': Cones: r.X.Cones: 'many' is text, not a number; ignored"),
+            std::string::npos)
+      << all;
+  EXPECT_NE(
+      all.find(
+          "post-process volume 'Room': Intensity: r.X.Intensity: 1000000000 is outside [0, 10]; ignored"),
+      std::string::npos)
+      << all;
   EXPECT_EQ(pp.get<int32_t>(cones.cvar()), 8);
-  EXPECT_FLOAT_EQ(pp.get<float>(intensityVar.cvar()), 10.0f);
+  EXPECT_FLOAT_EQ(pp.get<float>(intensityVar.cvar()), 1.0f);
   EXPECT_FLOAT_EQ(pp.get<float>(notOverridable.cvar()), 3.0f);
 }
 

@@ -21,10 +21,11 @@ struct CommandResult {
   std::string output;
 };
 
-CommandResult run(const std::string& args) {
+CommandResult run(const std::string& args, const std::string& environment = "") {
   std::string cmd = std::string("cd ") + BOUNCE_SOURCE_DIR +
-                    " && BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR + "/shader-cache " +
-                    BOUNCE_BINARY_DIR + "/bin/bounce-render " + args + " 2>&1";
+                    " && BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
+                    "/shader-cache " + environment + " " + BOUNCE_BINARY_DIR + "/bin/bounce-render " + args +
+                    " 2>&1";
   FILE* p = popen(cmd.c_str(), "r");
   CommandResult r{-1, {}};
   if (!p) return r;
@@ -99,6 +100,73 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"MissingIni", "--scene content/cornell_box.gltf --ini /nonexistent.ini",
                                "/nonexistent.ini"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// A bad value in an --ini file fails as the same value through --set does (status 2,
+// naming FILE:LINE), unless --keep-going asks to render with the default.
+struct BadIni {
+  const char* name;
+  std::string text;  ///< the ini file's contents (NUL bytes included)
+  const char* message;
+};
+
+class BounceRenderBadIni : public ::testing::TestWithParam<BadIni> {};
+
+TEST_P(BounceRenderBadIni, ExitsWithStatusTwoUnlessKeepGoing) {
+  const std::string file = scratch(std::string("bad-") + GetParam().name + ".ini");
+  std::ofstream(file, std::ios::binary) << GetParam().text;
+  const std::string args = "--scene content/cornell_box.gltf --gi none --width 16 --height 16 --ini " + file;
+  CommandResult r = run(args);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(GetParam().message), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bounce-render: " + file + ":"), std::string::npos) << "names FILE:LINE\n"
+                                                                              << r.output;
+  EXPECT_EQ(r.output.find('\0'), std::string::npos);
+  CommandResult going = run(args + " --keep-going");
+  EXPECT_EQ(going.status, 0) << going.output;
+  EXPECT_NE(going.output.find(GetParam().message), std::string::npos) << "still reported\n" << going.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BounceRenderBadIni,
+    ::testing::Values(BadIni{"Nan", "[SystemSettings]\nr.Bloom.Intensity=nan\n",
+                             "r.Bloom.Intensity: 'nan' is not a finite number"},
+                      BadIni{"Inf", "[SystemSettings]\nr.Bloom.Intensity=inf\n",
+                             "r.Bloom.Intensity: 'inf' is not a finite number"},
+                      BadIni{"Overflow", "[SystemSettings]\nr.Bloom.Intensity=1e400\n",
+                             "r.Bloom.Intensity: '1e400' is not a number"},
+                      BadIni{"NegativeSize", "[SystemSettings]\nr.Shadow.MapSize=-1\n",
+                             "r.Shadow.MapSize: -1 is not one of"},
+                      BadIni{"TextForInt", "[SystemSettings]\nr.Shadow.MapSize=big\n",
+                             "r.Shadow.MapSize: 'big' is not an integer"},
+                      BadIni{"NulBytes", std::string("[SystemSettings]\nr.Bloom.Intensity=1\0\0\n", 39),
+                             "\\x00"},
+                      BadIni{"MaterialDefaults", "[MaterialDefaults]\nUsedWithVxgiVoxelization=maybe\n",
+                             "UsedWithVxgiVoxelization: 'maybe' is not a bool"},
+                      BadIni{"UnknownKey", "[SystemSettings]\nr.Bloom.Intensty=1\n",
+                             "unknown console variable 'r.Bloom.Intensty'"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(BounceRenderCli, ARequestedPluginThatFailsToStartExitsWithStatusTwoUnlessKeepGoing) {
+  const std::string environment = std::string("BOUNCE_PLUGIN_PATH=") + BOUNCE_BINARY_DIR + "/test-plugins";
+  const std::string args =
+      "--scene content/cornell_box.gltf --gi none --width 16 --height 16 --enable-plugin TestFailing";
+  CommandResult r = run(args, environment);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("--enable-plugin TestFailing: the plugin failed to load"), std::string::npos)
+      << r.output;
+  CommandResult going = run(args + " --keep-going", environment);
+  EXPECT_EQ(going.status, 0) << going.output;
+}
+
+TEST(BounceRenderCli, ControlBytesInBadInputAreEscapedOnTheTerminal) {
+  // popen's /bin/sh is dash: printf makes the bytes (ESC, BEL) for the argument.
+  CommandResult r = run(
+      "--scene content/cornell_box.gltf --set \"$(printf 'r.Bloom.Intensity=\\033[2J\\033]0;owned\\007')\"");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find('\x07'), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'\\x1B[2J\\x1B]0;owned\\x07' is not a number"), std::string::npos) << r.output;
+}
 
 }  // namespace
 }  // namespace bounce

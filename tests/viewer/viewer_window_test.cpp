@@ -65,6 +65,12 @@ class ViewerWindowTest : public ::testing::Test {
                              "r.NoSuchVariable 3\n"
                              "r.Ambient.DebugMode banana\n"
                              "this is not a command\n"
+                             "# refused: the camera and the settings stay as they were\n"
+                             "camera position 3e38 0 0\n"
+                             "camera lookat -3e38 0 0\n"
+                             "camera print\n"
+                             "r.Shadow.MapSize 3\n"
+                             "r.Ambient.DebugMode \x1b[31mred\n"
                              "ui off\n"
                              "frames 1\n"
                              "screenshot "
@@ -155,6 +161,16 @@ TEST_F(ViewerWindowTest, BadConsoleLinesAreReportedAndTheScriptGoesOn) {
                                                                        << session_.output;
   EXPECT_NE(session_.output.find("unknown console variable or command 'this'"), std::string::npos)
       << session_.output;
+  // Script lines go through the settings' validator, as -set and the console do.
+  EXPECT_NE(session_.output.find("r.Shadow.MapSize: 3 is not one of"), std::string::npos) << session_.output;
+  // A look-at whose difference from the position would overflow never reaches the camera.
+  EXPECT_NE(session_.output.find("camera position: coordinates must lie within"), std::string::npos)
+      << session_.output;
+  EXPECT_EQ(session_.output.find("yaw nan"), std::string::npos) << session_.output;
+  EXPECT_EQ(session_.output.find("yaw -nan"), std::string::npos) << session_.output;
+  // Control bytes typed in a line come back escaped, never raw to the terminal.
+  EXPECT_EQ(session_.output.find('\x1b'), std::string::npos) << session_.output;
+  EXPECT_NE(session_.output.find("'\\x1B[31mred'"), std::string::npos) << session_.output;
   // The screenshot after the bad lines exists: the viewer kept running the script.
   EXPECT_TRUE(fs::exists(dir_ / "after-errors.png")) << session_.output;
 }
@@ -178,11 +194,14 @@ TEST_P(ViewerBadInput, ExitsWithStatusTwoAndOneClearLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     Viewer, ViewerBadInput,
-    ::testing::Values(BadInput{"MissingScene", "--scene content/no_such_scene.gltf", "no_such_scene.gltf"},
-                      BadInput{"MissingScript", "--script /nonexistent/script.txt",
-                               "--script /nonexistent/script.txt"},
-                      BadInput{"UnknownCvar", "--set r.NoSuchThing=1", "r.NoSuchThing"},
-                      BadInput{"BadOption", "--frobnicate", "frobnicate"}),
+    ::testing::Values(
+        BadInput{"MissingScene", "--scene content/no_such_scene.gltf", "no_such_scene.gltf"},
+        BadInput{"MissingScript", "--script /nonexistent/script.txt", "--script /nonexistent/script.txt"},
+        BadInput{"UnknownCvar", "--set r.NoSuchThing=1", "r.NoSuchThing"},
+        BadInput{"RefusedValue", "--set r.Shadow.MapSize=3", "r.Shadow.MapSize: 3 is not one of"},
+        BadInput{"UnknownPlugin", "--enable-plugin NoSuchPlugin",
+                 "--enable-plugin NoSuchPlugin: no such plugin"},
+        BadInput{"BadOption", "--frobnicate", "frobnicate"}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -1,6 +1,10 @@
 #include "configuration_sweep.h"
 
+#include "bounce/core/log.h"
+
 #include <fmt/format.h>
+
+#include <algorithm>
 
 namespace bounce::bench {
 
@@ -13,10 +17,21 @@ std::vector<Configuration> configurationsFor(const Engine& engine, const std::st
   for (const QualityKnobRegistry::Entry* e : engine.qualityKnobs().of(technique)) {
     const CVar* cvar = engine.cvars().find(e->desc.cvar);
     if (!cvar) continue;  // declared for a variable that does not exist: nothing to sweep
-    // Compare values as the variable parses them, so "8" and "8.0" are the same setting.
+    // Values go through the variable's own validator, as a -set would: a value it
+    // refuses is not swept, a clamped one is swept at its clamped value, each with a
+    // warning. Compare values as the variable formats them, so "8" and "8.0" are one.
     std::vector<std::string> values;
-    for (const std::string& v : e->desc.values)
-      if (auto parsed = cvar->parse(v, nullptr)) values.push_back(cvar->format(*parsed));
+    for (const std::string& v : e->desc.values) {
+      const CheckedValue checked = cvar->checkText(v);
+      if (!checked.ok()) {
+        log::warn("{}: quality knob '{}': {}; not swept", e->technique, e->desc.label, checked.message);
+        continue;
+      }
+      if (checked.clamped)
+        log::warn("{}: quality knob '{}': {}", e->technique, e->desc.label, checked.message);
+      const std::string text = cvar->format(*checked.value);
+      if (std::find(values.begin(), values.end(), text) == values.end()) values.push_back(text);
+    }
     knobs.push_back({cvar->name(), e->desc.label, cvar->valueText(), values});
   }
 

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   app.add_option("--cache", cacheDir, "Reference cache folder (default ~/.cache/bounce/references)");
   if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-bench")) return *status;
   auto fail = [](int status, const std::string& message) {
-    fmt::print(stderr, "bounce-bench: {}\n", message);
+    bounce::app::printError("bounce-bench", message);
     return status;
   };
   if (outDir.empty())

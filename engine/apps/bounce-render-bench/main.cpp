@@ -138,6 +138,8 @@ int main(int argc, char** argv) {
   bool perLevel = false;
   app.add_flag("--per-level", perLevel, "One row per NAME.L<n> pass instead of one NAME.L* sum per family");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
+  bool keepGoing = false;
+  bounce::app::addKeepGoing(app, keepGoing);
   if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-render-bench")) return *status;
 
   std::vector<bounce::BenchVariant> variants;
@@ -145,7 +147,7 @@ int main(int argc, char** argv) {
     std::string error;
     auto v = bounce::parseBenchVariant(text, &error);
     if (!v) {
-      fmt::print(stderr, "bounce-render-bench: --variant \"{}\": {}\n", text, error);
+      bounce::app::printError("bounce-render-bench", fmt::format("--variant \"{}\": {}", text, error));
       return 2;
     }
     variants.push_back(std::move(*v));
@@ -156,18 +158,18 @@ int main(int argc, char** argv) {
   options.userIni = std::filesystem::path();  // reproducible: no per-user settings
   options.sets = sets;
   options.technique = technique;
+  options.keepGoing = keepGoing;
   bounce::Engine engine(std::move(options));
-  for (const std::string& e : engine.commandLineErrors()) fmt::print(stderr, "bounce-render-bench: {}\n", e);
-  if (!engine.commandLineErrors().empty()) return 2;
+  if (auto status = bounce::app::commandLineFailure(engine, "bounce-render-bench")) return *status;
   bounce::GltfLoadResult loaded = engine.loadScene(scenePath);
   if (!engine.scene()) {
-    fmt::print(stderr, "bounce-render-bench: {}\n", loaded.error);
+    bounce::app::printError("bounce-render-bench", loaded.error);
     return 2;
   }
   std::string error;
   auto device = bounce::gpu::Device::create({.preferredDevice = deviceName}, &error);
   if (!device) {
-    fmt::print(stderr, "bounce-render-bench: {}\n", error);
+    bounce::app::printError("bounce-render-bench", error);
     return 1;
   }
   bounce::Renderer renderer(engine, *device);
@@ -182,14 +184,15 @@ int main(int argc, char** argv) {
       std::optional<bounce::AppliedVariant> applied =
           bounce::applyBenchVariant(engine.cvars(), variants[v], &error);
       if (!applied) {
-        fmt::print(stderr, "bounce-render-bench: variant '{}': {}\n", variants[v].label, error);
+        bounce::app::printError("bounce-render-bench",
+                                fmt::format("variant '{}': {}", variants[v].label, error));
         return 2;
       }
       bounce::RenderStats stats(device->name(), size, size, engine.technique());
       for (uint32_t f = 0; f < frames; ++f) {
         bounce::RenderedFrame frame = renderer.render(view, {}, f);
         if (!frame.gpu.ok()) {
-          fmt::print(stderr, "bounce-render-bench: {}\n", frame.gpu.errors.front());
+          bounce::app::printError("bounce-render-bench", frame.gpu.errors.front());
           return 2;
         }
         if (f > 0) stats.addFrame(frame.gpu);

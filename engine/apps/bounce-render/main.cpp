@@ -3,12 +3,13 @@
 //   bounce-render --scene FILE.gltf [--gi NAME|none] [--width W] [--height H]
 //       [--frames N] [--ini FILE]... [--set CVAR=VALUE]...
 //       [--out FILE.png] [--aov NAME=FILE.exr]... [--stats FILE.json]
-//       [--device NAME] [--print-graph] [--graph-json FILE]
+//       [--device NAME] [--print-graph] [--graph-json FILE] [--keep-going]
 //
 // AOVs (linear float OpenEXR): radiance, direct, indirect-irradiance, albedo, normal,
 // depth. The camera is the scene's first camera; the aspect ratio comes from W/H.
 // Exit status: 0 success, 1 no usable Vulkan device or a device failure, 2 bad
-// arguments or bad input (one-line reason), 3 Vulkan validation errors (when
+// arguments or bad input (one-line reason; bad values in --ini files and requested
+// plugins that fail to start too, unless --keep-going), 3 Vulkan validation errors (when
 // BOUNCE_VALIDATION=1).
 
 #include "bounce/core/log.h"
@@ -34,7 +35,7 @@ constexpr int kBadInput = 2;
 constexpr int kValidationErrors = 3;
 
 int fail(int status, const std::string& message) {
-  fmt::print(stderr, "bounce-render: {}\n", message);
+  bounce::app::printError("bounce-render", message);
   return status;
 }
 
@@ -50,7 +51,7 @@ int main(int argc, char** argv) {
   bounce::app::acceptUnrealSpellings(app);
   std::string scenePath, technique, outPath, statsPath, graphJson, deviceName;
   uint32_t width = 512, height = 512, frames = 1;
-  bool printGraph = false;
+  bool printGraph = false, keepGoing = false;
   std::vector<std::string> inis, sets, aovArgs, enable, disable;
   app.add_option("--scene", scenePath, "glTF scene to load")->required();
   app.add_option("--gi", technique, "GI technique: a GlobalIllumination plugin's name, or none");
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
   app.add_option("--disable-plugin", disable, "Disable a plugin (repeatable)");
   app.add_flag("--print-graph", printGraph, "Print the compiled render graph of the last frame");
   app.add_option("--graph-json", graphJson, "Write the compiled graph report as JSON");
+  bounce::app::addKeepGoing(app, keepGoing);
   if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-render")) return *status;
 
   // Declared before the engine so it is destroyed after it: plugins release their GPU
@@ -79,12 +81,9 @@ int main(int argc, char** argv) {
   options.enablePlugins = enable;
   options.disablePlugins = disable;
   options.technique = technique;
+  options.keepGoing = keepGoing;
   bounce::Engine engine(std::move(options));
-  if (!engine.commandLineErrors().empty()) {
-    for (size_t i = 1; i < engine.commandLineErrors().size(); ++i)
-      fmt::print(stderr, "bounce-render: {}\n", engine.commandLineErrors()[i]);
-    return fail(kBadInput, engine.commandLineErrors().front());
-  }
+  if (bounce::app::commandLineFailure(engine, "bounce-render")) return kBadInput;
   // AOV names are known once plugins have registered theirs.
   std::vector<AovRequest> aovs;
   for (const std::string& a : aovArgs) {

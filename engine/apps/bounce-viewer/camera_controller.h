@@ -49,7 +49,8 @@ class CameraController {
 
  private:
   glm::vec3 forward() const;
-  void lookAt(glm::vec3 point);
+  /// Turns toward `point`; false (nothing changes) when it is where the camera is.
+  bool lookAt(glm::vec3 point);
   void placeOnOrbit();
 
   Camera home_;

@@ -4,6 +4,7 @@
 
 #include "bounce/core/names.h"
 #include "panels.h"
+#include "setting_edit.h"
 #include "viewer.h"
 
 #include <fmt/format.h>
@@ -105,14 +106,7 @@ std::optional<std::string> widgetFor(const CVar& c) {
 }  // namespace
 
 bool applySetting(Viewer& viewer, CVar& cvar, const std::string& text) {
-  const SetResult r = viewer.engine().cvars().set(cvar, text, SetBy::Console, "viewer");
-  if (r.status == SetResult::Status::Rejected) {
-    viewer.log().add(LineKind::Error, r.message);
-    return false;
-  }
-  viewer.log().add(LineKind::Input, fmt::format("{} {}", cvar.name(), text));
-  if (!r.message.empty()) viewer.log().add(LineKind::Warning, r.message);  // clamped, pending
-  return true;
+  return applySettingEdit(viewer.engine().cvars(), viewer.log(), cvar, text);
 }
 
 void SettingsPanel::draw(Viewer& viewer, bool* open) {

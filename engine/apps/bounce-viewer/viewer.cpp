@@ -83,7 +83,7 @@ int Viewer::finish(int status) {
 
 int Viewer::open() {
   auto fail = [](int status, const std::string& message) {
-    fmt::print(stderr, "bounce-viewer: {}\n", message);
+    fmt::print(stderr, "bounce-viewer: {}\n", printable(message, true));
     return status;
   };
   EngineOptions eo;
@@ -92,10 +92,11 @@ int Viewer::open() {
   eo.enablePlugins = options_.enablePlugins;
   eo.disablePlugins = options_.disablePlugins;
   eo.technique = options_.technique;
+  eo.keepGoing = options_.keepGoing;
   engine_ = std::make_unique<Engine>(std::move(eo));
   if (!engine_->commandLineErrors().empty()) {
     for (size_t i = 1; i < engine_->commandLineErrors().size(); ++i)
-      fmt::print(stderr, "bounce-viewer: {}\n", engine_->commandLineErrors()[i]);
+      fmt::print(stderr, "bounce-viewer: {}\n", printable(engine_->commandLineErrors()[i], true));
     return fail(kExitBadInput, engine_->commandLineErrors().front());
   }
   if (!options_.script.empty()) {
@@ -156,9 +157,10 @@ void Viewer::runLine(const std::string& line, const std::string& origin) {
     log_.add(result.ok ? LineKind::Output : LineKind::Error, text);
     // Scripts run unattended: their output and errors also go to the terminal.
     if (!result.ok)
-      fmt::print(stderr, "bounce-viewer: {}{}\n", origin.empty() ? "" : origin + ": ", text);
+      fmt::print(stderr, "bounce-viewer: {}{}\n", printable(origin.empty() ? "" : origin + ": "),
+                 printable(text, true));
     else if (!origin.empty())
-      fmt::print("{}\n", text);
+      fmt::print("{}\n", printable(text, true));
   }
   std::fflush(stdout);
 }

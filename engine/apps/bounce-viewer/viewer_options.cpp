@@ -24,6 +24,7 @@ std::optional<ViewerOptions> parseViewerOptions(int argc, char** argv, int* exit
   app.add_option("--width", o.width, "Window width in pixels")->check(CLI::Range(64u, 16384u));
   app.add_option("--height", o.height, "Window height in pixels")->check(CLI::Range(64u, 16384u));
   app.add_flag("--no-vsync", noVsync, "Present as fast as frames render");
+  app::addKeepGoing(app, o.keepGoing);
   if (auto status = app::parseArguments(app, argc, argv, "bounce-viewer")) {
     *exitStatus = *status;
     return std::nullopt;

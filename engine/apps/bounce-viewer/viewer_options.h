@@ -12,6 +12,7 @@ struct ViewerOptions {
   std::string scene;  ///< empty: content/cornell_box.gltf under the engine root
   std::string technique;
   std::vector<std::string> iniFiles;
+  bool keepGoing = false;  ///< --keep-going (EngineOptions::keepGoing)
   std::vector<std::string> sets;
   std::vector<std::string> enablePlugins;
   std::vector<std::string> disablePlugins;

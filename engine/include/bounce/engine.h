@@ -36,6 +36,10 @@ struct EngineOptions {
   std::vector<std::filesystem::path> pluginDirs;  ///< searched before the defaults
   bool defaultPluginDirs = true;                  ///< also search <exe>/../plugins and $BOUNCE_PLUGIN_PATH
   std::string technique;                          ///< `--gi NAME`: selects (and enables) a GI technique
+  /// `--keep-going`: bad values or unknown keys in `-ini` files, and explicitly requested
+  /// plugins (`--enable-plugin`, the `--gi` technique's) that fail to start, are reported
+  /// and skipped instead of being command-line errors.
+  bool keepGoing = false;
 };
 
 /// The engine's own passes, placed between the extension points by FrameBuilder
@@ -70,8 +74,10 @@ class Engine {
 
   const std::filesystem::path& root() const { return root_; }
   const std::filesystem::path& userIniPath() const { return userIni_; }
-  /// Problems with `-set`, `-ini` or `--gi` (unknown names, bad values, missing files):
-  /// applications exit with status 2 when this is not empty.
+  /// Problems with `-set`, `-ini`, `--gi` or `--enable-plugin` (unknown names, bad
+  /// values — in `-ini` files too —, missing files, a requested plugin that failed to
+  /// start): applications exit with status 2 when this is not empty. With
+  /// EngineOptions::keepGoing the `-ini` values and plugin failures are only logged.
   const std::vector<std::string>& commandLineErrors() const { return commandLineErrors_; }
 
   /// Writes settings changed at console priority to the user ini, keeping its comments.
@@ -107,6 +113,11 @@ class Engine {
  private:
   void registerEngineVariables();
   void reportUnclaimedSettings();
+  void reportIniRefusals(const std::vector<CVarRegistry::Refused>& refused);
+  void reportRequestedPlugins(const EngineOptions& options);
+  /// A problem the user may choose to go on past (EngineOptions::keepGoing).
+  void requestFailed(std::string message);
+  bool fromIniOption(std::string_view source) const;
   std::filesystem::path locateRoot(const std::filesystem::path& hint) const;
 
   CVarRegistry cvars_;
@@ -124,6 +135,8 @@ class Engine {
   std::filesystem::path root_;
   std::filesystem::path userIni_;
   std::vector<std::string> commandLineErrors_;
+  std::vector<std::string> iniOptions_;  // `-ini` files as given, to tell their values from the user ini's
+  bool keepGoing_ = false;
   CVarRef<bool> allowCheats_;
   CVarRef<std::string> technique_;
   std::unique_ptr<RendererSettings> renderer_;

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdlib>
@@ -81,6 +82,8 @@ fs::path Engine::locateRoot(const fs::path& hint) const {
 
 Engine::Engine(EngineOptions options) {
   root_ = locateRoot(options.root);
+  keepGoing_ = options.keepGoing;
+  iniOptions_ = options.iniFiles;
 
   // 1. Configuration layers, lowest priority first.
   config_.addFile((root_ / "config" / "BaseEngine.ini").string(), SetBy::BaseIni, true);
@@ -88,8 +91,7 @@ Engine::Engine(EngineOptions options) {
   userIni_ = options.userIni ? *options.userIni : defaultUserIni();
   if (!userIni_.empty()) config_.addFile(userIni_.string(), SetBy::UserIni, false);
   for (const std::string& ini : options.iniFiles)
-    if (!config_.addFile(ini, SetBy::UserIni, true))
-      commandLineErrors_.push_back(fmt::format("cannot use -ini {}", ini));
+    if (!config_.addFile(ini, SetBy::UserIni, true)) requestFailed(fmt::format("cannot use -ini {}", ini));
 
   // 2. Plugins are discovered first so that r.GI.Technique can be validated.
   plugins_ = std::make_unique<PluginHost>(services_);
@@ -109,7 +111,7 @@ Engine::Engine(EngineOptions options) {
 
   // 3. Engine variables, then ini values and the command line on top of them.
   registerEngineVariables();
-  config_.applyTo(cvars_, {"Plugins"});
+  const std::vector<CVarRegistry::Refused> iniRefused = config_.applyTo(cvars_, {"Plugins"});
   for (const std::string& set : options.sets) {
     size_t eq = set.find('=');
     if (eq == std::string::npos || eq == 0) {
@@ -141,15 +143,61 @@ Engine::Engine(EngineOptions options) {
       enablement.commandLine[toLower(options.technique)] = true;
   }
   plugins_->loadEnabled(enablement);
-  if (!options.technique.empty() && !equalsIgnoreCase(options.technique, "none") &&
-      !plugins_->isLoaded(options.technique) && plugins_->descriptor(options.technique))
-    commandLineErrors_.push_back(fmt::format("--gi {}: the plugin failed to load: {}", options.technique,
-                                             plugins_->failure(options.technique)));
+  reportRequestedPlugins(options);
 
+  reportIniRefusals(iniRefused);
   reportUnclaimedSettings();
   for (const CVarRegistry::Refused& r : cvars_.refusedDeferred())
     if (r.value.by == SetBy::CommandLine) commandLineErrors_.push_back(r.message);
+  reportIniRefusals(cvars_.refusedDeferred());
   cvars_.markStartupComplete();
+}
+
+void Engine::requestFailed(std::string message) {
+  // With --keep-going the message has already been logged where it arose (the registry,
+  // the plugin host); without it the application stops with status 2.
+  if (!keepGoing_) commandLineErrors_.push_back(std::move(message));
+}
+
+bool Engine::fromIniOption(std::string_view source) const {
+  // Sources read "FILE:LINE", FILE spelled as it was given to -ini.
+  return std::any_of(iniOptions_.begin(), iniOptions_.end(), [&](const std::string& file) {
+    return source.size() > file.size() && source.substr(0, file.size()) == file && source[file.size()] == ':';
+  });
+}
+
+void Engine::reportIniRefusals(const std::vector<CVarRegistry::Refused>& refused) {
+  // Values the user named on this command line (through -ini) fail as -set values do;
+  // the user ini and the checked-in config stay logged errors (the defaults are used).
+  for (const CVarRegistry::Refused& r : refused)
+    if (r.value.by == SetBy::UserIni && fromIniOption(r.value.source))
+      requestFailed(fmt::format("{}: {}", r.value.source, r.message));
+}
+
+void Engine::reportRequestedPlugins(const EngineOptions& options) {
+  std::vector<std::string> requested = options.enablePlugins;
+  // A --gi name r.GI.Technique refused (unknown, not a technique) is already an error.
+  const bool gi = !options.technique.empty() && !equalsIgnoreCase(options.technique, "none") &&
+                  equalsIgnoreCase(technique_.cvar().getString(), options.technique);
+  if (gi) requested.push_back(options.technique);
+  for (size_t i = 0; i < requested.size(); ++i) {
+    const std::string& name = requested[i];
+    const std::string option = gi && i + 1 == requested.size() ? "--gi" : "--enable-plugin";
+    const PluginDescriptor* d = plugins_->descriptor(name);
+    if (!d) {
+      std::vector<std::string> names;
+      for (const PluginDescriptor& p : plugins_->available()) names.push_back(p.name);
+      commandLineErrors_.push_back(
+          fmt::format("{} {}: no such plugin{}", option, printable(name), didYouMean(name, names)));
+      continue;
+    }
+    if (plugins_->isLoaded(d->name)) continue;
+    if (std::any_of(options.disablePlugins.begin(), options.disablePlugins.end(),
+                    [&](const std::string& n) { return equalsIgnoreCase(n, name); }))
+      continue;  // enabled and disabled on one command line: the disable wins, as before
+    requestFailed(
+        fmt::format("{} {}: the plugin failed to load: {}", option, d->name, plugins_->failure(d->name)));
+  }
 }
 
 Engine::~Engine() {
@@ -228,10 +276,14 @@ void Engine::reportUnclaimedSettings() {
         if (!c->ini().empty()) known.push_back(c->ini().section);
       message = fmt::format("unknown section [{}]{}", d.section, didYouMean(d.section, known));
     }
-    if (d.by == SetBy::CommandLine)
+    if (d.by == SetBy::CommandLine) {
       commandLineErrors_.push_back(message);
-    else
+    } else if (d.by == SetBy::UserIni && fromIniOption(d.source)) {
+      log::error("{}: {}", d.source, message);
+      requestFailed(fmt::format("{}: {}", d.source, message));
+    } else {
       log::warn("{}: {}", d.source, message);
+    }
   }
 }
 

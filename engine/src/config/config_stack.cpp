@@ -156,7 +156,8 @@ std::vector<std::string> ConfigStack::keys(std::string_view sectionName) const {
   return s ? s->keyOrder : std::vector<std::string>{};
 }
 
-void ConfigStack::applyTo(CVarRegistry& cvars, const std::vector<std::string>& reserved) const {
+std::vector<CVarRegistry::Refused> ConfigStack::applyTo(CVarRegistry& cvars,
+                                                        const std::vector<std::string>& reserved) const {
   struct Write {
     const Section* section;
     const std::string* key;
@@ -181,12 +182,18 @@ void ConfigStack::applyTo(CVarRegistry& cvars, const std::vector<std::string>& r
   });
   // The registry logs rejected and clamped values with their source, and holds values
   // for variables that are not registered yet.
+  std::vector<CVarRegistry::Refused> refused;
   for (const Write& w : writes) {
-    if (equalsIgnoreCase(w.section->name, kSystemSettings))
-      cvars.set(*w.key, w.value->text, w.value->level, w.value->source);
-    else
-      cvars.setIni(w.section->name, *w.key, w.value->text, w.value->level, w.value->source);
+    const bool system = equalsIgnoreCase(w.section->name, kSystemSettings);
+    const SetResult r =
+        system ? cvars.set(*w.key, w.value->text, w.value->level, w.value->source)
+               : cvars.setIni(w.section->name, *w.key, w.value->text, w.value->level, w.value->source);
+    if (r.status == SetResult::Status::Rejected)
+      refused.push_back(
+          {{system ? std::string() : w.section->name, *w.key, w.value->text, w.value->level, w.value->source},
+           r.message});
   }
+  return refused;
 }
 
 bool ConfigStack::saveChangedSettings(const CVarRegistry& cvars, const std::string& path,

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 namespace bounce {
 
@@ -103,14 +104,14 @@ std::optional<CVarValue> CVar::parse(std::string_view text, std::string* error) 
   switch (type_) {
     case CVarType::Bool:
       if (auto b = parseBool(s)) return CVarValue(*b);
-      return fail(fmt::format("'{}' is not a bool (use 1/0, true/false, on/off)", s));
+      return fail(fmt::format("'{}' is not a bool (use 1/0, true/false, on/off)", printable(s)));
     case CVarType::Int:
       if (auto i = parseNumber<int32_t>(s)) return CVarValue(*i);
-      return fail(fmt::format("'{}' is not an integer", s));
+      return fail(fmt::format("'{}' is not an integer", printable(s)));
     case CVarType::Float: {
       auto f = parseNumber<float>(s);
-      if (!f) return fail(fmt::format("'{}' is not a number", s));
-      if (!std::isfinite(*f)) return fail(fmt::format("'{}' is not a finite number", s));
+      if (!f) return fail(fmt::format("'{}' is not a number", printable(s)));
+      if (!std::isfinite(*f)) return fail(fmt::format("'{}' is not a finite number", printable(s)));
       return CVarValue(*f);
     }
     case CVarType::String:
@@ -121,10 +122,142 @@ std::optional<CVarValue> CVar::parse(std::string_view text, std::string* error) 
         if (equalsIgnoreCase(s, enumNames_[i])) return CVarValue(int32_t(i));
       if (auto i = parseNumber<int32_t>(s); i && *i >= 0 && size_t(*i) < enumNames_.size())
         return CVarValue(*i);
-      return fail(fmt::format("'{}' is not one of {}", s, fmt::join(enumNames_, ", ")));
+      return fail(fmt::format("'{}' is not one of {}", printable(s), fmt::join(enumNames_, ", ")));
     }
   }
   return fail("unsupported type");
+}
+
+namespace {
+
+enum class RangeOutcome { Inside, Clamped, Refused };
+
+std::string rangeText(const CVar& c) {
+  auto num = [&](double v) {
+    return c.type() == CVarType::Int ? fmt::format("{}", int64_t(v)) : fmt::format("{}", v);
+  };
+  if (c.min() && c.max()) return fmt::format("[{}, {}]", num(*c.min()), num(*c.max()));
+  if (c.min()) return fmt::format("[{}, ...]", num(*c.min()));
+  return fmt::format("[..., {}]", num(*c.max()));
+}
+
+/// Checks `*x` (shown as `shown`) against the variable's range in double precision, so
+/// the test happens before the value is narrowed to int32 or float.
+RangeOutcome checkRange(const CVar& c, double* x, std::string_view shown, std::string* message) {
+  const bool below = c.min() && *x < *c.min();
+  const bool above = c.max() && *x > *c.max();
+  if (!below && !above) return RangeOutcome::Inside;
+  if (c.rangePolicy() == RangePolicy::Reject) {
+    *message = fmt::format("{}: {} is outside {}", c.name(), shown, rangeText(c));
+    return RangeOutcome::Refused;
+  }
+  *x = below ? *c.min() : *c.max();
+  return RangeOutcome::Clamped;
+}
+
+}  // namespace
+
+CheckedValue CVar::check(CVarValue value) const {
+  CheckedValue out;
+  if (value.index() != default_.index()) {
+    out.message = fmt::format("{}: value of the wrong type for a {} variable", name_, cvarTypeName(type_));
+    return out;
+  }
+  if (type_ == CVarType::Int || type_ == CVarType::Float) {
+    const std::string shown = format(value);
+    double x = type_ == CVarType::Int ? double(std::get<int32_t>(value)) : double(std::get<float>(value));
+    switch (checkRange(*this, &x, shown, &out.message)) {
+      case RangeOutcome::Refused:
+        return out;
+      case RangeOutcome::Clamped:
+        if (type_ == CVarType::Int)
+          value = int32_t(x);  // a declared int range holds int32 values
+        else
+          value = float(x);
+        out.clamped = true;
+        out.message =
+            fmt::format("{}: {} is outside {}; clamped to {}", name_, shown, rangeText(*this), format(value));
+        break;
+      case RangeOutcome::Inside:
+        break;
+    }
+  }
+  if (!allowed_.empty() && std::find(allowed_.begin(), allowed_.end(), value) == allowed_.end()) {
+    out.clamped = false;
+    out.message = fmt::format("{}: {} is not one of {}", name_, format(value), fmt::join(allowedText_, ", "));
+    return out;
+  }
+  if (validate_) {
+    if (std::string e = validate_(value); !e.empty()) {
+      out.clamped = false;
+      out.message = fmt::format("{}: {}", name_, e);
+      return out;
+    }
+  }
+  out.value = std::move(value);
+  return out;
+}
+
+std::optional<double> CVar::wideNumber(CVarType type, std::string_view text) {
+  if (type != CVarType::Int && type != CVarType::Float) return std::nullopt;
+  const std::optional<double> number = parseNumber<double>(trim(text));
+  if (!number || !std::isfinite(*number)) return std::nullopt;
+  if (type == CVarType::Int && *number != std::floor(*number)) return std::nullopt;
+  return number;
+}
+
+CheckedValue CVar::checkText(std::string_view text) const {
+  std::string error;
+  std::optional<CVarValue> value = parse(text, &error);
+  if (!value) {
+    if (std::optional<double> number = wideNumber(type_, text)) return checkNumber(*number);
+    return {std::nullopt, false, fmt::format("{}: {}", name_, error)};
+  }
+  return check(std::move(*value));
+}
+
+CheckedValue CVar::checkNumber(double number) const {
+  auto refuse = [&](std::string why) {
+    return CheckedValue{std::nullopt, false, fmt::format("{}: {}", name_, why)};
+  };
+  if (!std::isfinite(number)) return refuse(fmt::format("{} is not a finite number", number));
+  switch (type_) {
+    case CVarType::Bool:
+      return check(CVarValue(number != 0.0));
+    case CVarType::String:
+      return refuse(fmt::format("{} is not text", number));
+    case CVarType::Enum: {
+      if (number != std::floor(number) || number < 0.0 || number >= double(enumNames_.size()))
+        return refuse(fmt::format("{} is not one of {}", number, fmt::join(enumNames_, ", ")));
+      return check(CVarValue(int32_t(number)));
+    }
+    case CVarType::Int:
+    case CVarType::Float:
+      break;
+  }
+  const std::string shown = fmt::format("{}", number);
+  double x = type_ == CVarType::Int ? std::round(number) : number;
+  std::string message;
+  const RangeOutcome range = checkRange(*this, &x, shown, &message);
+  if (range == RangeOutcome::Refused) return {std::nullopt, false, message};
+  CVarValue value;
+  if (type_ == CVarType::Int) {
+    // Without a declared range an int still has int32's: refuse rather than wrap.
+    if (x < double(std::numeric_limits<int32_t>::min()) || x > double(std::numeric_limits<int32_t>::max()))
+      return refuse(fmt::format("{} is not a 32-bit integer", shown));
+    value = int32_t(x);
+  } else {
+    if (std::abs(x) > double(std::numeric_limits<float>::max()))
+      return refuse(fmt::format("{} is beyond the range of a float", shown));
+    value = float(x);
+  }
+  CheckedValue out = check(std::move(value));
+  if (out.ok() && range == RangeOutcome::Clamped) {
+    out.clamped = true;
+    out.message = fmt::format("{}: {} is outside {}; clamped to {}", name_, shown, rangeText(*this),
+                              format(*out.value));
+  }
+  return out;
 }
 
 Subscription CVar::onChanged(std::function<void(const CVar&)> callback) {

@@ -211,6 +211,11 @@ SetResult CVarRegistry::set(CVar& cvar, std::string_view text, SetBy by, std::st
   std::string error;
   std::optional<CVarValue> value = cvar.parse(text, &error);
   if (!value) {
+    // "3e9" for an int is a number out of its range, not text: it is checked as the same
+    // number in a post-process volume would be (clamped or refused by the declaration).
+    if (std::optional<double> number = CVar::wideNumber(cvar.type(), text))
+      return write(
+          cvar, [&] { return cvar.checkNumber(*number); }, by, source);
     SetResult r{SetResult::Status::Rejected,
                 fmt::format("{}: {}; keeps {}", cvar.name(), error, cvar.valueText())};
     if (by != SetBy::Console) log::error("{}: {}", source.empty() ? setByName(by) : source, r.message);
@@ -220,6 +225,12 @@ SetResult CVarRegistry::set(CVar& cvar, std::string_view text, SetBy by, std::st
 }
 
 SetResult CVarRegistry::setValue(CVar& c, CVarValue value, SetBy by, std::string_view source) {
+  return write(
+      c, [&] { return c.check(std::move(value)); }, by, source);
+}
+
+SetResult CVarRegistry::write(CVar& c, const std::function<CheckedValue()>& check, SetBy by,
+                              std::string_view source) {
   using Status = SetResult::Status;
   std::string where = source.empty() ? std::string(setByName(by)) : std::string(source);
   // Writes that nobody sees the result of (ini files, the command line) are logged
@@ -236,9 +247,6 @@ SetResult CVarRegistry::setValue(CVar& c, CVarValue value, SetBy by, std::string
     return r;
   };
 
-  if (value.index() != c.default_.index())
-    return finish({Status::Rejected, fmt::format("{}: value of the wrong type for a {} variable", c.name_,
-                                                 cvarTypeName(c.type_))});
   if (hasFlag(c.flags_, CVarFlags::ReadOnly) && by >= SetBy::CommandLine)
     return finish({Status::Rejected, fmt::format("{} is read-only (set it in an ini file)", c.name_)});
   if (hasFlag(c.flags_, CVarFlags::Cheat) && by >= SetBy::CommandLine && !cheatsAllowed())
@@ -249,35 +257,12 @@ SetResult CVarRegistry::setValue(CVar& c, CVarValue value, SetBy by, std::string
         {Status::Ignored, fmt::format("{} keeps {} (set by {} at {}, which has priority over {})", c.name_,
                                       c.valueText(), setByName(c.setBy_), c.source_, setByName(by))});
 
-  Status status = Status::Changed;
-  std::string message;
-  if (isNumeric(c.type_)) {
-    double v = numeric(value);
-    bool below = c.min_ && v < *c.min_;
-    bool above = c.max_ && v > *c.max_;
-    if (below || above) {
-      if (c.rangePolicy_ == RangePolicy::Reject)
-        return finish({Status::Rejected, fmt::format("{}: {} is outside {}; keeps {}", c.name_,
-                                                     c.format(value), rangeText(c), c.valueText())});
-      double clamped = below ? *c.min_ : *c.max_;
-      CVarValue original = value;
-      if (c.type_ == CVarType::Int)
-        value = int32_t(clamped);
-      else
-        value = float(clamped);
-      status = Status::Clamped;
-      message = fmt::format("{}: {} is outside {}; clamped to {}", c.name_, c.format(original), rangeText(c),
-                            c.format(value));
-    }
-  }
-  if (!c.allowed_.empty() && std::find(c.allowed_.begin(), c.allowed_.end(), value) == c.allowed_.end())
-    return finish(
-        {Status::Rejected, fmt::format("{}: {} is not one of {}; keeps {}", c.name_, c.format(value),
-                                       fmt::join(c.allowedText_, ", "), c.valueText())});
-  if (c.validate_) {
-    if (std::string e = c.validate_(value); !e.empty())
-      return finish({Status::Rejected, fmt::format("{}: {}; keeps {}", c.name_, e, c.valueText())});
-  }
+  CheckedValue checked = check();
+  if (!checked.ok())
+    return finish({Status::Rejected, fmt::format("{}; keeps {}", checked.message, c.valueText())});
+  CVarValue value = std::move(*checked.value);
+  const Status status = checked.clamped ? Status::Clamped : Status::Changed;
+  std::string message = std::move(checked.message);
 
   c.setBy_ = by;
   c.source_ = where;

@@ -1,5 +1,7 @@
 #include "bounce/core/log.h"
 
+#include "bounce/core/names.h"
+
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -65,12 +67,15 @@ std::string_view levelName(Level level) {
   return "?";
 }
 
-void write(Level level, std::string_view message) {
+void write(Level level, std::string_view text) {
+  // Messages quote user input (names, values, script lines): escaping control bytes here
+  // keeps an ESC sequence in a bad value from reaching the terminal by any path.
+  const std::string message = printable(text, true);
   Hub& h = hub();
   std::lock_guard lock(h.mutex);
   if (level >= h.terminalLevel) h.terminal->log(toSpd(level), "{}", message);
   if (!h.callbacks.empty()) {
-    Record record{level, std::string(message)};
+    Record record{level, message};
     for (auto* cb : h.callbacks) (*cb)(record);
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <numeric>
 
 namespace bounce {
@@ -82,6 +83,90 @@ std::string didYouMean(std::string_view name, std::span<const std::string> candi
   std::string out = " (did you mean ";
   for (size_t i = 0; i < close.size(); ++i) out += (i ? ", '" : "'") + close[i] + "'";
   return out + "?)";
+}
+
+}  // namespace bounce
+
+namespace bounce {
+
+namespace {
+
+/// Length of the valid UTF-8 sequence starting at `s[i]` (2–4), or 0 when it is not one.
+/// Overlong forms, surrogates and code points above U+10FFFF are invalid (RFC 3629).
+size_t utf8SequenceLength(std::string_view s, size_t i, uint32_t* codePoint) {
+  const auto byte = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char lead = byte(i);
+  size_t length = 0;
+  uint32_t cp = 0;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2;
+    cp = lead & 0x1Fu;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3;
+    cp = lead & 0x0Fu;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4;
+    cp = lead & 0x07u;
+  } else {
+    return 0;
+  }
+  if (i + length > s.size()) return 0;
+  for (size_t k = 1; k < length; ++k) {
+    if ((byte(i + k) & 0xC0u) != 0x80u) return 0;
+    cp = (cp << 6) | (byte(i + k) & 0x3Fu);
+  }
+  if ((length == 3 && (cp < 0x800 || (cp >= 0xD800 && cp <= 0xDFFF))) ||
+      (length == 4 && (cp < 0x10000 || cp > 0x10FFFF)))
+    return 0;
+  *codePoint = cp;
+  return length;
+}
+
+void appendHex(std::string& out, unsigned char byte) {
+  constexpr char kDigits[] = "0123456789ABCDEF";
+  out += "\\x";
+  out += kDigits[byte >> 4];
+  out += kDigits[byte & 0xF];
+}
+
+}  // namespace
+
+std::string printable(std::string_view text, bool multiLine) {
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size();) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7F) {
+      out += char(c);
+      ++i;
+    } else if (c == '\n') {
+      out += multiLine ? "\n" : "\\n";
+      ++i;
+    } else if (c == '\t') {
+      out += multiLine ? "\t" : "\\t";
+      ++i;
+    } else if (c == '\r') {
+      out += "\\r";
+      ++i;
+    } else if (c < 0x80) {
+      appendHex(out, c);  // other C0 controls (ESC, NUL, BEL...) and DEL
+      ++i;
+    } else {
+      uint32_t cp = 0;
+      const size_t length = utf8SequenceLength(text, i, &cp);
+      if (length == 0) {
+        appendHex(out, c);  // not UTF-8: a lone 0x9B is CSI to an 8-bit terminal
+        ++i;
+      } else if (cp >= 0x80 && cp <= 0x9F) {
+        for (size_t k = 0; k < length; ++k) appendHex(out, static_cast<unsigned char>(text[i + k]));
+        i += length;
+      } else {
+        out.append(text.substr(i, length));
+        i += length;
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace bounce

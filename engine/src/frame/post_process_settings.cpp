@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace bounce {
 
@@ -45,44 +46,48 @@ float PostProcessSettings::distanceToVolume(const glm::mat4& world, const glm::v
 
 namespace {
 
-// Converts a volume's value to the variable's type; nullopt (with a reason) if it cannot.
-std::optional<CVarValue> convert(const CVar& cvar, const PostProcessValue& v, std::string* why) {
-  auto number = [&]() -> std::optional<double> {
-    if (auto* d = std::get_if<double>(&v)) return *d;
-    if (auto* b = std::get_if<bool>(&v)) return *b ? 1.0 : 0.0;
-    return std::nullopt;
-  };
-  switch (cvar.type()) {
-    case CVarType::Bool:
-      if (auto n = number()) return CVarValue(*n != 0.0);
-      break;
-    case CVarType::Int:
-      if (auto n = number(); n && std::isfinite(*n)) return CVarValue(int32_t(std::lround(*n)));
-      break;
-    case CVarType::Float:
-      if (auto n = number(); n && std::isfinite(*n)) return CVarValue(float(*n));
-      break;
-    case CVarType::String:
-      if (auto* s = std::get_if<std::string>(&v)) return CVarValue(*s);
-      break;
-    case CVarType::Enum:
-      if (auto* s = std::get_if<std::string>(&v)) return cvar.parse(*s, why);
-      if (auto n = number()) return cvar.parse(fmt::format("{}", std::lround(*n)), why);
-      break;
+// Checks a volume's value with the variable's own validator (CVar::checkNumber /
+// checkText), exactly as an ini file or -set would be checked: refused values are
+// ignored with a warning, out-of-range values under RangePolicy::Clamp are clamped with
+// one. Numbers are checked as doubles, before they are narrowed (3e9 cones is out of
+// range, not a wrapped int32).
+CheckedValue checkVolumeValue(const CVar& cvar, const PostProcessValue& v) {
+  if (auto* d = std::get_if<double>(&v)) return cvar.checkNumber(*d);
+  if (auto* b = std::get_if<bool>(&v)) return cvar.checkNumber(*b ? 1.0 : 0.0);
+  if (auto* s = std::get_if<std::string>(&v)) {
+    // Text is the variable's own spelling only for strings and enums (by name); "4" for
+    // an int is a JSON type error in the volume, not something to parse.
+    if (cvar.type() == CVarType::String || cvar.type() == CVarType::Enum) return cvar.checkText(*s);
+    return {std::nullopt, false,
+            fmt::format("{}: '{}' is text, not a {}", cvar.name(), printable(*s),
+                        cvar.type() == CVarType::Bool ? "bool" : "number")};
   }
-  if (why && why->empty()) *why = fmt::format("not a valid {}", cvarTypeName(cvar.type()));
-  return std::nullopt;
+  return {std::nullopt, false, fmt::format("{}: not a valid {}", cvar.name(), cvarTypeName(cvar.type()))};
 }
 
-CVarValue clampToRange(const CVar& cvar, CVarValue value) {
-  auto clampNum = [&](double x) {
-    if (cvar.min()) x = std::max(x, *cvar.min());
-    if (cvar.max()) x = std::min(x, *cvar.max());
-    return x;
-  };
-  if (auto* i = std::get_if<int32_t>(&value); i && cvar.type() == CVarType::Int) *i = int32_t(clampNum(*i));
-  if (auto* f = std::get_if<float>(&value)) *f = float(clampNum(*f));
-  return value;
+// A float interpolated between two accepted values stays inside the range (it is convex),
+// but may not be one of an `allowed` list or may fail a validate callback. The rule:
+// snap to the nearest allowed value (ties go to the lower one); if the validate callback
+// refuses it, the blend switches instead, as ints do (the volume's value at weight ≥ 0.5).
+CVarValue acceptedBlend(const CVar& cvar, float blended, const CVarValue& current, const CVarValue& target,
+                        float weight) {
+  if (!cvar.allowedValues().empty()) {
+    float best = std::get<float>(current);
+    float bestDistance = std::numeric_limits<float>::infinity();
+    for (const std::string& text : cvar.allowedValues()) {
+      std::optional<CVarValue> allowed = cvar.parse(text, nullptr);
+      if (!allowed) continue;
+      const float a = std::get<float>(*allowed);
+      const float distance = std::abs(a - blended);
+      if (distance < bestDistance || (distance == bestDistance && a < best)) {
+        best = a;
+        bestDistance = distance;
+      }
+    }
+    blended = best;
+  }
+  if (cvar.check(CVarValue(blended)).ok()) return CVarValue(blended);
+  return weight >= 0.5f ? target : current;
 }
 
 }  // namespace
@@ -134,19 +139,22 @@ PostProcessSettings PostProcessSettings::blend(const Scene& scene, const CVarReg
                                           didYouMean(key, names)));
         continue;
       }
-      std::string why;
-      std::optional<CVarValue> target = convert(*cvar, value, &why);
-      if (!target) {
-        if (warnings) warnings->push_back(fmt::format("post-process volume '{}': {}: {}", v.name, key, why));
+      CheckedValue checked = checkVolumeValue(*cvar, value);
+      if (!checked.ok()) {
+        if (warnings)
+          warnings->push_back(
+              fmt::format("post-process volume '{}': {}: {}; ignored", v.name, key, checked.message));
         continue;
       }
-      *target = clampToRange(*cvar, std::move(*target));
+      if (checked.clamped && warnings)
+        warnings->push_back(fmt::format("post-process volume '{}': {}: {}", v.name, key, checked.message));
+      const CVarValue* target = &*checked.value;
       auto it = out.values_.find(cvar);
       CVarValue current = it != out.values_.end() ? it->second : cvar->value();
       CVarValue result;
       if (cvar->type() == CVarType::Float) {
         float a = std::get<float>(current), b = std::get<float>(*target);
-        result = a + (b - a) * weight;
+        result = acceptedBlend(*cvar, a + (b - a) * weight, current, *target, weight);
       } else {
         result = weight >= 0.5f ? *target : current;
       }

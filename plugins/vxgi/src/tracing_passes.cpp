@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bounce::vxgi {
@@ -43,6 +44,14 @@ struct GBufferInputs {
   }
 };
 
+// The engine checks every write of r.VXGI.DiffuseSparsity and r.VXGI.DiffuseCones against
+// their declarations, but this plugin divides by the one and loops over the other: a value
+// that slipped past (a future write path, a declaration edited without this) falls back
+// to full-resolution tracing and to the declared cone range instead of a division by
+// zero or an unbounded loop on the GPU.
+int32_t checkedSparsity(int32_t sparsity) { return sparsity == 2 || sparsity == 4 ? sparsity : 1; }
+int32_t checkedCones(int32_t cones) { return std::clamp(cones, 1, 32); }
+
 }  // namespace
 
 void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& s,
@@ -52,9 +61,9 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
   TracingPush push{};
   push.inverseViewProjection = frame.view.inverseViewProjection;
   push.cameraPosition = glm::vec4(frame.view.position, 1.0f);
-  const int32_t sparsity = frame.setting(s.diffuseSparsity);
+  const int32_t sparsity = checkedSparsity(frame.setting(s.diffuseSparsity));
   push.sizes = glm::ivec4(int32_t(frame.view.width), int32_t(frame.view.height), sparsity,
-                          frame.setting(s.diffuseCones));
+                          checkedCones(frame.setting(s.diffuseCones)));
   push.tracing = glm::vec4(frame.setting(s.diffuseIntensity), frame.setting(s.tracingStep),
                            frame.setting(s.maxDistance), s.normalOffset.get());
   push.extra = glm::vec4(frame.setting(s.ambientRange), s.specularRoughnessThreshold.get(),

@@ -46,7 +46,10 @@ class ConfigStack {
   /// Writes [SystemSettings] entries and every plugin-section key to `cvars` at the
   /// priority of the layer that set them. Keys nobody registered yet are held by the
   /// registry. Sections in `reserved` (e.g. "Plugins") are the engine's own and skipped.
-  void applyTo(CVarRegistry& cvars, const std::vector<std::string>& reserved) const;
+  /// Returns the writes the registry refused (bad values, read-only...), which it has
+  /// also logged; held values refused later are in CVarRegistry::refusedDeferred().
+  std::vector<CVarRegistry::Refused> applyTo(CVarRegistry& cvars,
+                                             const std::vector<std::string>& reserved) const;
 
   /// Saves every variable changed at console priority this session into the ini file
   /// at `path` (created if missing): variables with an ini binding under their section

@@ -87,6 +87,18 @@ struct SetResult {
   bool ok() const { return status != Status::Rejected; }
 };
 
+/// The outcome of checking a value against a variable's declaration (range, allowed
+/// values, validate callback). Every path that writes a setting goes through
+/// CVar::check or CVar::checkNumber — ini files, -set, the console, post-process volumes,
+/// viewer widgets and scripts, benchmark knobs — so a value is refused, or clamped with
+/// a message, the same way whatever wrote it.
+struct CheckedValue {
+  std::optional<CVarValue> value;  ///< what to store; nullopt when the value is refused
+  bool clamped = false;            ///< out of range under RangePolicy::Clamp; `message` says so
+  std::string message;             ///< why it was refused, or what clamping did; "" when accepted
+  bool ok() const { return value.has_value(); }
+};
+
 class CVarRegistry;
 
 /// A registered console variable. Owned by the registry; plugins keep CVarRef handles.
@@ -133,6 +145,23 @@ class CVar {
   std::string format(const CVarValue& value) const;
   /// Parses text into this variable's type; on failure returns nullopt and an error.
   std::optional<CVarValue> parse(std::string_view text, std::string* error) const;
+
+  /// The one validator: checks a value of this variable's type against its range
+  /// (refused or clamped, as its RangePolicy says), its allowed values and its validate
+  /// callback. Messages name the variable and the value ("r.X: 3 is not one of 1, 2, 4").
+  CheckedValue check(CVarValue value) const;
+  /// Checks text: parse(), then check(); text that is a number too wide for the type
+  /// ("3e9" for an int) goes to checkNumber instead (see wideNumber).
+  CheckedValue checkText(std::string_view text) const;
+  /// Checks a number that arrives as a double (post-process volumes, JSON) before it is
+  /// narrowed to the variable's type, so 3e9 for an int is out of range rather than a
+  /// wrapped int32; NaN and infinities are refused. Bools take 0 as false, else true;
+  /// enums take an integral index.
+  CheckedValue checkNumber(double number) const;
+  /// Text that does not parse as an int or float variable's value but is a finite number
+  /// (an integral one for ints), such as "3e9" for an int or "1e39" for a float: it goes
+  /// to checkNumber, so text and post-process volumes refuse or clamp it alike.
+  static std::optional<double> wideNumber(CVarType type, std::string_view text);
 
   /// Registers a callback fired once per effective change of the value.
   Subscription onChanged(std::function<void(const CVar&)> callback);

@@ -79,6 +79,9 @@ class CVarRegistry {
   Subscription onAnyChanged(std::function<void(const CVar&)> callback);
 
  private:
+  /// Every write ends here: read-only, cheat and priority rules, then `check` (the
+  /// variable's validator), then the store and the change callbacks.
+  SetResult write(CVar& cvar, const std::function<CheckedValue()>& check, SetBy by, std::string_view source);
   CVar& insert(std::unique_ptr<CVar> cvar);
   void applyDeferred(CVar& cvar);
   void notify(CVar& cvar);

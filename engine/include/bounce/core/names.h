@@ -30,4 +30,12 @@ std::vector<std::string> closestNames(std::string_view name, std::span<const std
 /// " (did you mean 'a', 'b'?)" or "" when nothing is close.
 std::string didYouMean(std::string_view name, std::span<const std::string> candidates);
 
+/// User input made safe to print inside a one-line message: control characters (C0,
+/// DEL, and U+0080–U+009F, which terminals obey as escape sequences) and bytes that are
+/// not valid UTF-8 become `\n`, `\r`, `\t` or `\xHH`; everything else, UTF-8 text
+/// included, is kept, so 'abc' and 'Grüße' read as written. The log sink applies it to
+/// every message with `multiLine` (keeping line breaks and tabs, which multi-line reports
+/// such as shader errors use); quote user input with it wherever a message bypasses the log.
+std::string printable(std::string_view text, bool multiLine = false);
+
 }  // namespace bounce

@@ -4,6 +4,11 @@
 // BlendWeight and, for bound volumes outside their box, by 1 − distance / BlendRadius.
 // Each overridden variable moves from its current value toward the volume's by that
 // weight: floats interpolate; bools, ints, enums and strings switch at weight ≥ 0.5.
+// Each volume value is checked by the variable's own validator (CVar::checkNumber), as
+// an ini value or -set would be: refused values are ignored and clamped ones clamped,
+// each with a warning. Switching never yields a value no volume gave; an interpolated
+// float that a declaration would refuse (not in its `allowed` list) snaps to the nearest
+// allowed value, and one its validate callback refuses switches instead.
 
 #include "bounce/config/cvar_registry.h"
 #include "bounce/scene/scene.h"
