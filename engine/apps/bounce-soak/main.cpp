@@ -195,8 +195,9 @@ int main(int argc, char** argv) {
   app.add_option("--set", o.sets, "Console variable NAME=VALUE for every technique (repeatable)");
   app.add_option("--device", o.device, "Vulkan device name (substring)");
   app.add_flag("--validation", o.validation, "Vulkan validation layer on; any message fails the run");
-  app.add_option("--max-rss-slope", o.limits.maxRssSlope,
-                 "Largest RSS slope over the second half, KiB per 1000 frames (default 64)");
+  app.add_option(
+      "--max-rss-slope", o.limits.maxRssSlope,
+      "Largest RSS slope over the second half, KiB per 1000 frames (default 64; < 0: not checked)");
   app.add_option("--max-rss-growth", o.limits.maxRssGrowthMiB,
                  "Largest RSS growth over the second half in MiB (default: not checked)");
   app.add_option("--max-device-growth", o.limits.maxDeviceGrowth,
@@ -250,9 +251,10 @@ int main(int argc, char** argv) {
   fmt::print("\n{}, scene {}, {}², device memory: the engine's live allocations\n\n{}", device->name(),
              o.scene, o.size, bounce::soak::soakTable(results));
   fmt::print(
-      "\nlimits: RSS slope ≤ {:.1f} KiB/1000 frames, device memory growth over the second half ≤ {} "
+      "\nlimits: RSS slope ≤ {} KiB/1000 frames, device memory growth over the second half ≤ {} "
       "bytes{}\n",
-      o.limits.maxRssSlope, o.limits.maxDeviceGrowth,
+      o.limits.maxRssSlope >= 0.0 ? fmt::format("{:.1f}", o.limits.maxRssSlope) : std::string("∞"),
+      o.limits.maxDeviceGrowth,
       o.limits.maxRssGrowthMiB >= 0.0 ? fmt::format(", RSS growth ≤ {:.2f} MiB", o.limits.maxRssGrowthMiB)
                                       : std::string());
   if (validationFailed) return kValidationErrors;

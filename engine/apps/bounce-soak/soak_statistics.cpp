@@ -56,7 +56,7 @@ std::vector<std::string> failures(const TechniqueSoak& r, const SoakLimits& limi
     out.push_back(fmt::format("{} NaN/Inf values (first: {})", r.nonFinite, r.firstNonFinite));
   if (r.validationErrors > 0) out.push_back(fmt::format("{} Vulkan validation errors", r.validationErrors));
   for (const std::string& e : r.errors) out.push_back(e);
-  if (r.rssSlope > limits.maxRssSlope)
+  if (limits.maxRssSlope >= 0.0 && r.rssSlope > limits.maxRssSlope)
     out.push_back(fmt::format("RSS grows {:.1f} KiB per 1000 frames over the second half (limit {:.1f})",
                               r.rssSlope, limits.maxRssSlope));
   const double growthMiB = (double(r.rssEnd) - double(r.rssHalf)) / double(1 << 20);
