@@ -13,8 +13,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace bounce::test {
 
@@ -36,9 +38,12 @@ inline std::filesystem::path scratchDir() {
 /// Runs bounce-viewer with validation, no user ini and the build's shader cache.
 inline CommandResult runViewer(const std::string& args) {
   const std::filesystem::path dir = scratchDir();
+  // The synchronization checks pass through when the test runs with them (tests/sync_validation.cmake).
+  const char* validation = std::getenv("BOUNCE_VALIDATION");
+  const std::string mode = validation && std::string_view(validation) == "sync" ? "sync" : "1";
   const std::string cmd =
       std::string("cd ") + BOUNCE_SOURCE_DIR + " && XDG_RUNTIME_DIR=" + (dir / "runtime").string() +
-      " BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
+      " BOUNCE_VALIDATION=" + mode + " BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
       "/shader-cache timeout 300 " + BOUNCE_BINARY_DIR + "/bin/bounce-viewer " + args + " 2>&1";
   CommandResult r;
   FILE* p = popen(cmd.c_str(), "r");

@@ -18,13 +18,21 @@ Allocation& Allocation::operator=(Allocation&& o) noexcept {
     memory_ = std::exchange(o.memory_, VK_NULL_HANDLE);
     size_ = std::exchange(o.size_, 0);
     mapped_ = std::exchange(o.mapped_, nullptr);
+    tally_ = std::exchange(o.tally_, nullptr);
   }
   return *this;
 }
 
 void Allocation::reset() {
-  if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
+  if (memory_) {
+    vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
+    if (tally_) {
+      tally_->bytes -= size_;
+      --tally_->blocks;
+    }
+  }
   memory_ = VK_NULL_HANDLE;
+  tally_ = nullptr;
   mapped_ = nullptr;
   size_ = 0;
 }
@@ -47,11 +55,12 @@ bool hasLayer(const char* name) {
                      [&](const auto& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
-bool hasInstanceExtension(const char* name) {
+/// Whether the instance (or, with `layer`, that layer) offers the extension.
+bool hasInstanceExtension(const char* name, const char* layer = nullptr) {
   uint32_t n = 0;
-  vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr);
+  vkEnumerateInstanceExtensionProperties(layer, &n, nullptr);
   std::vector<VkExtensionProperties> exts(n);
-  vkEnumerateInstanceExtensionProperties(nullptr, &n, exts.data());
+  vkEnumerateInstanceExtensionProperties(layer, &n, exts.data());
   return std::any_of(exts.begin(), exts.end(),
                      [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
@@ -93,7 +102,8 @@ int32_t queueFamilyFor(VkPhysicalDevice pd, VkSurfaceKHR surface) {
   vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, families.data());
   for (uint32_t i = 0; i < n; ++i) {
     const auto& q = families[i];
-    if (!(q.queueFlags & VK_QUEUE_GRAPHICS_BIT) || !(q.queueFlags & VK_QUEUE_COMPUTE_BIT) || !q.timestampValidBits)
+    if (!(q.queueFlags & VK_QUEUE_GRAPHICS_BIT) || !(q.queueFlags & VK_QUEUE_COMPUTE_BIT) ||
+        !q.timestampValidBits)
       continue;
     if (surface) {
       VkBool32 present = VK_FALSE;
@@ -141,12 +151,33 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
 #else
   constexpr bool kDebugBuild = true;  // debug builds always validate
 #endif
-  d->validation_ = options.validation || envFlag("BOUNCE_VALIDATION") || kDebugBuild;
+  // $BOUNCE_VALIDATION: unset or 0 off, "sync" adds the synchronization checks, anything
+  // else turns the layer on.
+  const char* env = std::getenv("BOUNCE_VALIDATION");
+  const bool envSync = env && std::string_view(env) == "sync";
+  d->synchronizationValidation_ = options.synchronizationValidation || envSync;
+  d->validation_ =
+      options.validation || d->synchronizationValidation_ || envFlag("BOUNCE_VALIDATION") || kDebugBuild;
   if (d->validation_ && !hasLayer(kValidationLayer)) {
     if (options.validation && !kDebugBuild)
       return fail("the Vulkan validation layer is not installed (Debian package vulkan-validationlayers)");
     log::warn("BOUNCE_VALIDATION is set but the validation layer is not installed; running without it");
     d->validation_ = false;
+    d->synchronizationValidation_ = false;
+  }
+  // The layer takes its features from VkValidationFeaturesEXT (VK_EXT_validation_features,
+  // which the layer itself provides; Debian 12's 1.3.239 does).
+  const bool validationFeatures =
+      d->validation_ && hasInstanceExtension(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME, kValidationLayer);
+  if (d->synchronizationValidation_ && !validationFeatures) {
+    if (options.synchronizationValidation)
+      return fail(
+          "the Vulkan validation layer does not offer VK_EXT_validation_features (synchronization "
+          "validation)");
+    log::warn(
+        "BOUNCE_VALIDATION=sync: the validation layer lacks VK_EXT_validation_features; running "
+        "without synchronization validation");
+    d->synchronizationValidation_ = false;
   }
   d->debugUtils_ = hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
 
@@ -155,8 +186,10 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   std::vector<const char*> extensions;
   for (const std::string& e : options.instanceExtensions) extensions.push_back(e.c_str());
   if (options.createSurface && options.instanceExtensions.empty())
-    return fail("a window surface needs the window system's instance extensions (DeviceOptions::instanceExtensions)");
+    return fail(
+        "a window surface needs the window system's instance extensions (DeviceOptions::instanceExtensions)");
   if (d->debugUtils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (d->synchronizationValidation_) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "Bounce";
@@ -177,6 +210,14 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   ici.enabledExtensionCount = uint32_t(extensions.size());
   ici.ppEnabledExtensionNames = extensions.data();
   if (d->validation_ && d->debugUtils_) ici.pNext = &messengerInfo;  // also catches instance creation
+  const VkValidationFeatureEnableEXT syncEnable = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = &syncEnable;
+  if (d->synchronizationValidation_) {
+    features.pNext = ici.pNext;
+    ici.pNext = &features;
+  }
   if (VkResult r = vkCreateInstance(&ici, nullptr, &d->instance_); r != VK_SUCCESS)
     return fail(
         fmt::format("cannot create a Vulkan instance: {} (is a Vulkan driver installed? Debian: "
@@ -319,7 +360,9 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   check(vkCreateCommandPool(d->device_, &pci, nullptr, &d->oneShotPool_), "vkCreateCommandPool");
   d->createSamplers();
   log::info("Vulkan device: {} ({}){}", d->name_, d->isCpu() ? "CPU" : "GPU",
-            d->validation_ ? ", validation on" : "");
+            d->synchronizationValidation_ ? ", validation on with synchronization checks"
+            : d->validation_              ? ", validation on"
+                                          : "");
   return d;
 }
 
@@ -392,7 +435,7 @@ Allocation Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFla
       throw VulkanError("vkMapMemory", r);
     }
   }
-  return Allocation(device_, memory, req.size, mapped);
+  return Allocation(device_, memory, req.size, mapped, &tally_);
 }
 
 void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) const {

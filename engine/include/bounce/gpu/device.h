@@ -7,6 +7,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -24,6 +25,10 @@ struct DeviceOptions {
   /// Khronos validation layer with a message counter. Also on with $BOUNCE_VALIDATION=1
   /// and in debug builds.
   bool validation = false;
+  /// The validation layer's synchronization checks as well (missing or wrong barriers:
+  /// SYNC-HAZARD-* messages, counted as errors). Implies `validation`. Also on with
+  /// $BOUNCE_VALIDATION=sync. Several times slower; tests run a subset with it.
+  bool synchronizationValidation = false;
   /// Extra instance extensions (a window system's surface extensions).
   std::vector<std::string> instanceExtensions;
   /// For a window: creates the surface once the instance exists (e.g. with
@@ -51,12 +56,25 @@ enum class SamplerKind : uint8_t {
   Count,
 };
 
-/// One device memory block; freed on destruction.
+/// Live device memory: bytes and blocks allocated and not yet freed.
+struct MemoryTally {
+  std::atomic<uint64_t> bytes{0};
+  std::atomic<uint64_t> blocks{0};
+};
+
+/// One device memory block; freed on destruction. `tally`, when given, is the owning
+/// device's count of live memory: raised here, lowered when the block is freed.
 class Allocation {
  public:
   Allocation() = default;
-  Allocation(VkDevice device, VkDeviceMemory memory, VkDeviceSize size, void* mapped)
-      : device_(device), memory_(memory), size_(size), mapped_(mapped) {}
+  Allocation(VkDevice device, VkDeviceMemory memory, VkDeviceSize size, void* mapped,
+             MemoryTally* tally = nullptr)
+      : device_(device), memory_(memory), size_(size), mapped_(mapped), tally_(tally) {
+    if (tally_) {
+      tally_->bytes += size_;
+      ++tally_->blocks;
+    }
+  }
   Allocation(Allocation&& o) noexcept { *this = std::move(o); }
   Allocation& operator=(Allocation&& o) noexcept;
   Allocation(const Allocation&) = delete;
@@ -73,6 +91,7 @@ class Allocation {
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkDeviceSize size_ = 0;
   void* mapped_ = nullptr;
+  MemoryTally* tally_ = nullptr;
 };
 
 class Device {
@@ -107,6 +126,10 @@ class Device {
   /// Allocates memory for `requirements` with `properties` (host-visible memory is
   /// mapped persistently). Throws VulkanError when no memory type fits.
   Allocation allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties) const;
+  /// Device memory currently allocated through allocate() (all live Allocations), and
+  /// how many blocks: what a soak run watches for leaks.
+  uint64_t allocatedBytes() const { return tally_.bytes.load(); }
+  uint64_t allocationCount() const { return tally_.blocks.load(); }
 
   VkSampler sampler(SamplerKind kind) const { return samplers_[size_t(kind)]; }
 
@@ -119,6 +142,7 @@ class Device {
   std::vector<std::string> validationMessages() const;
   void clearValidationMessages();
   bool validationEnabled() const { return validation_; }
+  bool synchronizationValidationEnabled() const { return synchronizationValidation_; }
 
   /// Names objects for validation messages and GPU debuggers (no-op without debug utils).
   void setName(VkObjectType type, uint64_t handle, const std::string& name) const;
@@ -147,6 +171,7 @@ class Device {
   std::string name_;
   DeviceFeatures features_;
   bool validation_ = false;
+  bool synchronizationValidation_ = false;
   bool debugUtils_ = false;
   PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
   VkSampler samplers_[size_t(SamplerKind::Count)] = {};
@@ -155,6 +180,7 @@ class Device {
   std::vector<std::string> messages_;
   size_t errorCount_ = 0;
   mutable std::mutex submitMutex_;
+  mutable MemoryTally tally_;
 };
 
 }  // namespace bounce::gpu
