@@ -10,14 +10,16 @@
 # fuzzer learns goes to $BUILD/fuzz-corpus/<target>/, and a crashing input to
 # $BUILD/fuzz-artifacts/. Reproduce one with: $BUILD/fuzz/fuzz_<target> FILE.
 # BOUNCE_ASAN_BUILD: the build folder (default build-asan, shared with tools/test.sh's
-# sanitizer stage). Exit status: 0 when no target found anything.
+# sanitizer stage). BOUNCE_FUZZ_KEEP_GOING=1: for long runs, go on after a finding
+# (libFuzzer's fork mode) and collect every crashing input. Exit status: 0 when no
+# target found anything.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=(ini cvar console script plugin_descriptor gltf)
 build=${BOUNCE_ASAN_BUILD:-build-asan}
 
 if [ "${1:-}" = list ]; then printf '%s\n' "${targets[@]}"; exit 0; fi
-if [ $# -lt 2 ]; then sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; fi
+if [ $# -lt 2 ]; then sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; fi
 which=$1 seconds=$2
 shift 2
 if [ "$which" = all ]; then run=("${targets[@]}"); else run=("$which"); fi
@@ -42,14 +44,16 @@ for t in "${run[@]}"; do
   # -close_fd_mask=3: the engine's own messages about bad input are not news here;
   # libFuzzer and the sanitizers still report on a copy of stderr.
   # -timeout=25: one input running longer is a hang (the first also starts the engine).
+  keep_going=()
+  [ "${BOUNCE_FUZZ_KEEP_GOING:-0}" = 0 ] || keep_going=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
   if ! LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}" \
     UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
     "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=4096 \
-    -max_len="$(max_len "$t")" -close_fd_mask=3 -print_final_stats=1 \
+    -max_len="$(max_len "$t")" -close_fd_mask=3 -print_final_stats=1 "${keep_going[@]}" \
     -artifact_prefix="$build/fuzz-artifacts/$t-" "$@" "$work" "tests/fuzz/corpus/$t" 2>"$build/fuzz-$t.log"; then
     failed+=("$t")
     echo "fuzz.sh: $t FOUND A PROBLEM (log: $build/fuzz-$t.log; input in $build/fuzz-artifacts/):" >&2
-    grep -E 'ERROR|runtime error|SUMMARY|Test unit written|fuzz_' "$build/fuzz-$t.log" | head -20 >&2
+    grep -E 'ERROR|runtime error|SUMMARY|Test unit written|fuzz_|crashes:' "$build/fuzz-$t.log" | head -20 >&2
   else
     grep -E '^stat::number_of_executed_units|^Done' "$build/fuzz-$t.log" | tr '\n' ' '
     echo

@@ -6,6 +6,7 @@
 #include "bounce/config/cvar_registry.h"
 #include "fuzz_support.h"
 
+#include <cmath>
 #include <cstdlib>
 
 namespace {
@@ -17,19 +18,24 @@ using namespace bounce;
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view value = fuzz::text(data, size);
   CVarRegistry cvars;
-  std::vector<CVar*> all;
-  all.push_back(&*cvars.add(CVarDesc<bool>{.name = "b", .defaultValue = false}));
-  all.push_back(&*cvars.add(CVarDesc<int32_t>{.name = "i", .defaultValue = 8, .min = 1, .max = 4096}));
-  all.push_back(&*cvars.add(CVarDesc<int32_t>{.name = "ic", .defaultValue = 8, .min = -5, .max = 16,
-                                              .outOfRange = RangePolicy::Clamp}));
-  all.push_back(&*cvars.add(CVarDesc<int32_t>{.name = "iu", .defaultValue = 0}));
-  all.push_back(&*cvars.add(CVarDesc<float>{.name = "f", .defaultValue = 1.0f}));
-  all.push_back(&*cvars.add(CVarDesc<float>{.name = "fc", .defaultValue = 1.0f, .min = 0.0, .max = 10.0,
-                                            .outOfRange = RangePolicy::Clamp}));
-  all.push_back(&*cvars.add(CVarDesc<int32_t>{.name = "e", .defaultValue = 0, .enumNames = {"A", "Bb", "C"}}));
-  all.push_back(&*cvars.add(CVarDesc<int32_t>{.name = "a", .defaultValue = 1, .allowed = {1, 2, 4}}));
-  all.push_back(&*cvars.add(CVarDesc<float>{.name = "af", .defaultValue = 0.5f, .allowed = {0.5f, 1.0f}}));
-  all.push_back(&*cvars.add(CVarDesc<std::string>{.name = "s", .defaultValue = "x"}));
+  std::vector<CVar*> all{
+      &cvars.add(CVarDesc<bool>{.name = "b", .defaultValue = false}).cvar(),
+      &cvars.add(CVarDesc<int32_t>{.name = "i", .defaultValue = 8, .min = 1, .max = 4096}).cvar(),
+      &cvars
+           .add(CVarDesc<int32_t>{
+               .name = "ic", .defaultValue = 8, .min = -5, .max = 16, .outOfRange = RangePolicy::Clamp})
+           .cvar(),
+      &cvars.add(CVarDesc<int32_t>{.name = "iu", .defaultValue = 0}).cvar(),
+      &cvars.add(CVarDesc<float>{.name = "f", .defaultValue = 1.0f}).cvar(),
+      &cvars
+           .add(CVarDesc<float>{
+               .name = "fc", .defaultValue = 1.0f, .min = 0.0, .max = 10.0, .outOfRange = RangePolicy::Clamp})
+           .cvar(),
+      &cvars.add(CVarDesc<int32_t>{.name = "e", .defaultValue = 0, .enumNames = {"A", "Bb", "C"}}).cvar(),
+      &cvars.add(CVarDesc<int32_t>{.name = "a", .defaultValue = 1, .allowed = {1, 2, 4}}).cvar(),
+      &cvars.add(CVarDesc<float>{.name = "af", .defaultValue = 0.5f, .allowed = {0.5f, 1.0f}}).cvar(),
+      &cvars.add(CVarDesc<std::string>{.name = "s", .defaultValue = "x"}).cvar(),
+  };
   for (CVar* cvar : all) {
     std::string error;
     const std::optional<CVarValue> parsed = cvar->parse(value, &error);

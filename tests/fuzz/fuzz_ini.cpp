@@ -12,12 +12,16 @@ namespace {
 using namespace bounce;
 
 void addVariables(CVarRegistry& cvars) {
-  cvars.add(CVarDesc<int32_t>{.name = "r.Size", .defaultValue = 64, .min = 1, .max = 4096,
-                              .ini = {"Plugin", "Size"}});
-  cvars.add(CVarDesc<int32_t>{.name = "r.Clamped", .defaultValue = 4, .min = 0, .max = 16,
-                              .outOfRange = RangePolicy::Clamp});
-  cvars.add(CVarDesc<float>{.name = "r.Scale", .defaultValue = 1.0f, .min = 0.0, .max = 100.0,
-                            .ini = {"Plugin", "Scale"}, .postProcess = "Scale"});
+  cvars.add(CVarDesc<int32_t>{
+      .name = "r.Size", .defaultValue = 64, .min = 1, .max = 4096, .ini = {"Plugin", "Size"}});
+  cvars.add(CVarDesc<int32_t>{
+      .name = "r.Clamped", .defaultValue = 4, .min = 0, .max = 16, .outOfRange = RangePolicy::Clamp});
+  cvars.add(CVarDesc<float>{.name = "r.Scale",
+                            .defaultValue = 1.0f,
+                            .min = 0.0,
+                            .max = 100.0,
+                            .ini = {"Plugin", "Scale"},
+                            .postProcess = "Scale"});
   cvars.add(CVarDesc<bool>{.name = "r.On", .defaultValue = true});
   cvars.add(CVarDesc<int32_t>{.name = "r.Mode", .defaultValue = 0, .enumNames = {"Off", "Low", "High"}});
   cvars.add(CVarDesc<int32_t>{.name = "r.Allowed", .defaultValue = 1, .allowed = {1, 2, 4}});
@@ -34,7 +38,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (size_t i = 0; i < files.size() && i < 3; ++i) {
     std::vector<IniDiagnostic> diagnostics;
     IniDocument doc = IniDocument::parse(files[i], "f.ini", diagnostics);
-    for (const IniEntry& e : doc.entries()) doc.set(e.section, e.key, "1");
+    const std::vector<IniEntry> entries = doc.entries();  // set() may add entries
+    for (const IniEntry& e : entries) doc.set(e.section, e.key, "1");
     (void)IniDocument::parse(doc.text(), "edited.ini", diagnostics);
     stack.addText(files[i], "layer" + std::to_string(i) + ".ini", levels[i]);
   }
@@ -47,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   addVariables(cvars);
   stack.applyTo(cvars, {"Plugins", "MaterialDefaults", "LightDefaults"});
   // Variables registered after the ini was applied take their deferred values.
-  cvars.add(CVarDesc<float>{.name = "late.Value", .defaultValue = 0.5f, .min = 0.0, .max = 1.0,
-                            .ini = {"Late", "Value"}});
+  cvars.add(CVarDesc<float>{
+      .name = "late.Value", .defaultValue = 0.5f, .min = 0.0, .max = 1.0, .ini = {"Late", "Value"}});
   return 0;
 }

@@ -20,19 +20,20 @@ struct ViewerConsole {
   std::unique_ptr<bounce::viewer::CameraController> camera;
 
   ViewerConsole() {
-    bounce::GltfLoadResult loaded = engine.loadScene(std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box.gltf");
+    bounce::GltfLoadResult loaded =
+        engine.loadScene(std::string(BOUNCE_SOURCE_DIR) + "/content/cornell_box.gltf");
     if (!loaded.scene && !engine.scene()) {
       fprintf(stderr, "fuzz_script: %s\n", loaded.error.c_str());
       std::abort();
     }
     const bounce::Scene& scene = *engine.scene();
-    camera = std::make_unique<bounce::viewer::CameraController>(scene.cameras().front(), glm::vec3(0.0f), 2.0f);
+    camera =
+        std::make_unique<bounce::viewer::CameraController>(scene.cameras().front(), glm::vec3(0.0f), 2.0f);
     bounce::viewer::registerSceneCommands(engine);
-    engine.console().addCommand({.name = "camera",
-                                 .help = "camera ...",
-                                 .run = [this](const std::vector<std::string>& args) {
-                                   return camera->execute(args);
-                                 }});
+    engine.console().addCommand(
+        {.name = "camera", .help = "camera ...", .run = [this](const std::vector<std::string>& args) {
+           return camera->execute(args);
+         }});
   }
 };
 

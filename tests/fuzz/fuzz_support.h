@@ -41,7 +41,8 @@ inline std::string scratchFile(std::string_view contents, const std::string& ext
       std::filesystem::temp_directory_path() / ("bounce-fuzz-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / ("input" + extension)).string();
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(contents.data(), std::streamsize(contents.size()));
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(contents.data(), std::streamsize(contents.size()));
   return path;
 }
 
