@@ -73,7 +73,7 @@ def main():
     env["BOUNCE_USER_INI"] = os.path.join(scratch, "user.ini")  # never the machine's own
     env.setdefault("LSAN_OPTIONS", "suppressions=" + os.path.join(HERE, "..", "sanitizers", "lsan.supp"))
     env.setdefault("UBSAN_OPTIONS", "print_stacktrace=1:halt_on_error=1")
-    argv = [a.render]
+    argv = [os.path.abspath(a.render)]
     for x in args:
         x = x.replace("@CASES@", CASES).replace("@GEN@", generated).replace("@SCRATCH@", scratch)
         if "@FIFO@" in x:
