@@ -102,15 +102,16 @@ def checked_in():
                scene(light={"name": "Sun", "type": "directional", "intensity": 2}, light_node={"translation": [0, 0, 0]}))
     # Item 5: huge and zero scales.
     write_json("node_scale_1e30.gltf", scene(extra_nodes=[{"name": "Huge", "mesh": 0, "scale": [1e30, 1e30, 1e30]}]))
-    write_json("camera_scale_0.gltf", scene(camera_node={"scale": [0, 0, 0]}))
-    write_json("camera_at_1e30.gltf", scene(camera_node={"translation": [0, 0, 1e30]}))
+    write_json("camera_scale_0.gltf", scene(camera={"name": "FlatCam"}, camera_node={"name": "FlatCam", "scale": [0, 0, 0]}))
+    write_json("camera_at_1e30.gltf", scene(camera={"name": "FarCam"}, camera_node={"name": "FarCam", "translation": [0, 0, 1e30]}))
     # Item 6: post-process-volume values.
     write_json("pp_sparsity_0.gltf", scene(extra_nodes=[pp_volume({"VxgiDiffuseSparsity": 0})]))
     write_json("pp_sparsity_3.gltf", scene(extra_nodes=[pp_volume({"VxgiDiffuseSparsity": 3})]))
     write_json("pp_cones_3e9.gltf", scene(extra_nodes=[pp_volume({"VxgiDiffuseCones": 3e9})]))
     write_json("pp_nan_string.gltf", scene(extra_nodes=[pp_volume({"VxgiDiffuseCones": "nan"})]))
     # Item 8: huge but finite values, glTF-invalid values.
-    write_json("light_1e30.gltf", scene(light={"name": "Light", "type": "point", "intensity": 1e30}))
+    write_json("light_1e30.gltf", scene(light={"name": "BrightLight", "type": "point", "intensity": 1e30},
+                                        light_node={"name": "BrightLight"}))
     write_json("emissive_1e9.gltf", scene(material={
         "name": "Glow", "emissiveFactor": [1, 1, 1],
         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 1e9}}}))
