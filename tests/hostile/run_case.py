@@ -59,15 +59,25 @@ def main():
     codes, must_say, args, number = cases[a.name]
 
     scratch = tempfile.mkdtemp(prefix=f"bounce-hostile-{a.name}-")
-    generated = a.generated or os.path.join(scratch, "generated")
-    if any("@GEN@" in x for x in args) and not os.path.exists(os.path.join(generated, "deep_hierarchy.gltf")):
+    generated = os.path.abspath(a.generated or os.path.join(scratch, "generated"))
+    wanted = [x.replace("@GEN@", generated) for x in args if "@GEN@" in x]
+    if not all(os.path.exists(x) for x in wanted):
         # ctest runs cases in parallel: write into a private folder, then move it in place.
         tmp = tempfile.mkdtemp(prefix="generated-", dir=os.path.dirname(os.path.abspath(generated)))
         subprocess.run([sys.executable, os.path.join(HERE, "make_corpus.py"), "--generated", tmp], check=True)
+        old = generated + ".old-" + os.path.basename(tmp)
+        if os.path.exists(generated):
+            os.rename(generated, old)  # an older generator's output
         try:
             os.rename(tmp, generated)
         except OSError:
             pass  # another case made it first
+    # A case whose input is missing would pass as "bad input": the corpus itself is broken.
+    for x in args:
+        path = x.replace("@CASES@", CASES).replace("@GEN@", generated).split("=")[-1]
+        if ("@CASES@" in x or "@GEN@" in x) and not os.path.exists(path):
+            print(f"FAIL {a.name}: its input {path} does not exist ({MANIFEST}:{number})")
+            return 1
     fifo = os.path.join(scratch, "fifo.ini")
     env = dict(os.environ)
     env.setdefault("BOUNCE_VALIDATION", "1")
