@@ -15,6 +15,9 @@ packages=(
   libimgui-dev libglfw3-dev
   # tests: GoogleTest, and an X server for the viewer tests
   libgtest-dev libgmock-dev xvfb xauth
+  # the sanitizer build and the fuzzers (clang 14 with its ASan/UBSan/libFuzzer runtimes),
+  # the hostile-input runner, and CI's check of this list (../shared/tools/check-install-deps)
+  clang-14 libclang-rt-14-dev python3 strace
 )
 
 missing=()

@@ -27,6 +27,22 @@ TEST(CVarRegistry, DeclaresTypedVariablesWithDefaults) {
   EXPECT_EQ(i->setBy(), SetBy::Constructor);
 }
 
+// Found by tests/fuzz/fuzz_cvar.cpp: a string value that starts and ends with a quote, or
+// with white space at an end, lost them when printed (as the user ini is written) and
+// read back.
+TEST(CVarRegistry, StringValuePrintsAsTextThatReadsBackTheSame) {
+  CVarRegistry r;
+  auto s = r.add<std::string>({.name = "t.String", .defaultValue = "x"});
+  for (const std::string value : {"\"\"\"", "\"a b\"", "\"\"", "plain", "\"half", " lead", "trail\v", "\x05\"\x05\"\"\v"}) {
+    ASSERT_TRUE(r.set(s.cvar(), "\"" + value + "\"", SetBy::Console).ok()) << value;
+    ASSERT_EQ(s.get(), value);
+    std::string error;
+    const std::optional<CVarValue> again = s->parse(s->valueText(), &error);
+    ASSERT_TRUE(again) << error;
+    EXPECT_EQ(std::get<std::string>(*again), value) << "printed as " << s->valueText();
+  }
+}
+
 TEST(CVarRegistry, RejectsBadDeclarations) {
   CVarRegistry r;
   r.add<int32_t>({.name = "t.A", .aliases = {"t.AliasA"}});

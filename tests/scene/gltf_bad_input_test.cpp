@@ -49,6 +49,20 @@ TEST(GltfBadInput, MalformedJson) {
   expectFailure(loadGltf(dir.file("broken.gltf")), dir.file("broken.gltf"), {"malformed JSON"});
 }
 
+// Found by tests/hostile: tinygltf converts JSON recursively and overflowed the stack.
+TEST(GltfBadInput, DeeplyNestedJsonIsRefusedBeforeParsing) {
+  TempDir dir;
+  const std::string depth(100000, '[');
+  test::writeText(dir.file("deep.gltf"),
+                  R"({"asset": {"version": "2.0"}, "extras": )" + depth + std::string(100000, ']') + "}");
+  expectFailure(loadGltf(dir.file("deep.gltf")), dir.file("deep.gltf"), {"malformed JSON", "100001 levels deep"});
+  // Brackets inside strings are text, not nesting.
+  GltfBuilder b = validTriangle();
+  b.doc["asset"]["extras"] = {{"note", std::string(2000, '[')}};
+  GltfLoadResult ok = test::loadBuilt(b, dir);
+  EXPECT_TRUE(ok.scene) << ok.error;
+}
+
 TEST(GltfBadInput, ErrorsAreAlsoLogged) {
   TempDir dir;
   log::Capture capture;

@@ -5,6 +5,8 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 
 namespace bounce::viewer {
 
@@ -14,14 +16,20 @@ std::optional<Script> Script::load(const std::string& path, std::string* error) 
     *error = fmt::format("--script {}: cannot read it ({})", path, std::strerror(errno));
     return std::nullopt;
   }
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse(text, path);
+}
+
+Script Script::parse(std::string_view text, const std::string& path) {
   Script script;
   script.path_ = path;
-  std::string text;
-  for (size_t number = 1; std::getline(in, text); ++number) {
-    if (!text.empty() && text.back() == '\r') text.pop_back();  // files written on Windows
-    const size_t start = text.find_first_not_of(" \t");
+  std::istringstream in{std::string(text)};
+  std::string line;
+  for (size_t number = 1; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // files written on Windows
+    const size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos) continue;
-    const std::string_view body = std::string_view(text).substr(start);
+    const std::string_view body = std::string_view(line).substr(start);
     if (body.starts_with('#') || body.starts_with("//") || body.starts_with(';')) continue;
     script.lines_.push_back({number, std::string(body)});
   }

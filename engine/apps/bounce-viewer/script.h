@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bounce::viewer {
@@ -19,6 +20,9 @@ class Script {
  public:
   /// Reads `path`; on failure returns nullopt with a one-line reason.
   static std::optional<Script> load(const std::string& path, std::string* error);
+  /// The lines of a script's text; `path` names it in messages. (Separate from load so
+  /// that tests/fuzz can feed it without a file or a window.)
+  static Script parse(std::string_view text, const std::string& path);
   const std::string& path() const { return path_; }
   std::optional<ScriptLine> next();
   bool finished() const { return position_ >= lines_.size(); }

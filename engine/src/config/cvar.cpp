@@ -85,8 +85,16 @@ std::string CVar::format(const CVarValue& value) const {
       return fmt::format("{}", std::get<int32_t>(value));
     case CVarType::Float:
       return fmt::format("{}", std::get<float>(value));
-    case CVarType::String:
-      return std::get<std::string>(value);
+    case CVarType::String: {
+      // parse() trims white space and takes one pair of surrounding quotes off, so a
+      // value with white space at either end, or that itself starts and ends with a
+      // quote, prints inside one more pair to read back the same (the user ini is
+      // written with format()). Found by tests/fuzz/fuzz_cvar.cpp.
+      const std::string& s = std::get<std::string>(value);
+      const bool quoted = s.size() >= 2 && s.front() == '"' && s.back() == '"';
+      if (quoted || (!s.empty() && trim(s).size() != s.size())) return "\"" + s + "\"";
+      return s;
+    }
     case CVarType::Enum: {
       int32_t i = std::get<int32_t>(value);
       return i >= 0 && size_t(i) < enumNames_.size() ? enumNames_[size_t(i)] : fmt::format("{}", i);

@@ -2,6 +2,7 @@
 
 #include "bounce/core/log.h"
 #include "bounce/core/names.h"
+#include "gpu/library_pin.h"
 
 #include <fmt/format.h>
 
@@ -359,6 +360,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   pci.queueFamilyIndex = d->queueFamily_;
   check(vkCreateCommandPool(d->device_, &pci, nullptr, &d->oneShotPool_), "vkCreateCommandPool");
   d->createSamplers();
+  keepLoadedLibrariesForLeakChecks();
   log::info("Vulkan device: {} ({}){}", d->name_, d->isCpu() ? "CPU" : "GPU",
             d->synchronizationValidation_ ? ", validation on with synchronization checks"
             : d->validation_              ? ", validation on"

@@ -329,7 +329,10 @@ void DeferredPipeline::output(RenderGraph& g, const FrameContext& frame, const F
     const AovRegistry::Entry* entry = aovs_.find(aov);
     wanted.emplace_back(aov, entry ? bb.texture(entry->desc.channel) : TextureHandle{});
   }
-  for (auto& [name, handle] : wanted) {
+  // Not a structured binding: clang 14 (the sanitizer build) cannot capture one in a lambda.
+  for (auto& entry : wanted) {
+    const std::string& name = entry.first;
+    const TextureHandle& handle = entry.second;
     Readback& rb = (*readbacks)[name];
     rb.width = frame.view.width;
     rb.height = frame.view.height;
