@@ -103,8 +103,7 @@ int32_t queueFamilyFor(VkPhysicalDevice pd, VkSurfaceKHR surface) {
   vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, families.data());
   for (uint32_t i = 0; i < n; ++i) {
     const auto& q = families[i];
-    if (!(q.queueFlags & VK_QUEUE_GRAPHICS_BIT) || !(q.queueFlags & VK_QUEUE_COMPUTE_BIT) ||
-        !q.timestampValidBits)
+    if (!(q.queueFlags & VK_QUEUE_GRAPHICS_BIT) || !(q.queueFlags & VK_QUEUE_COMPUTE_BIT) || !q.timestampValidBits)
       continue;
     if (surface) {
       VkBool32 present = VK_FALSE;
@@ -160,7 +159,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   d->validation_ =
       options.validation || d->synchronizationValidation_ || envFlag("BOUNCE_VALIDATION") || kDebugBuild;
   if (d->validation_ && !hasLayer(kValidationLayer)) {
-    if (options.validation && !kDebugBuild)
+    if ((options.validation || options.synchronizationValidation) && !kDebugBuild)
       return fail("the Vulkan validation layer is not installed (Debian package vulkan-validationlayers)");
     log::warn("BOUNCE_VALIDATION is set but the validation layer is not installed; running without it");
     d->validation_ = false;
@@ -187,8 +186,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   std::vector<const char*> extensions;
   for (const std::string& e : options.instanceExtensions) extensions.push_back(e.c_str());
   if (options.createSurface && options.instanceExtensions.empty())
-    return fail(
-        "a window surface needs the window system's instance extensions (DeviceOptions::instanceExtensions)");
+    return fail("a window surface needs the window system's instance extensions (DeviceOptions::instanceExtensions)");
   if (d->debugUtils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   if (d->synchronizationValidation_) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
 
