@@ -66,5 +66,13 @@ TEST(Printable, TheLogSinkEscapesEveryMessage) {
   EXPECT_EQ(capture.records()[0].message, "'\\x1B[31mred' is not a number");
 }
 
+TEST(Abbreviated, ShortTextIsKeptAndLongTextIsCutAtACharacterWithItsLength) {
+  EXPECT_EQ(abbreviated("r.VXGI.MapSize"), "r.VXGI.MapSize");
+  EXPECT_EQ(abbreviated(std::string(200, 'x'), 10), "xxxxxxxxxx… (200 bytes)");
+  // "é" is two bytes: a cut inside it moves back to the character's start.
+  EXPECT_EQ(abbreviated("abcdefghi\xC3\xA9z", 10), "abcdefghi… (12 bytes)");
+  EXPECT_EQ(abbreviated("a\x1b[2Jb", 20), "a\\x1B[2Jb");  // still printable()
+}
+
 }  // namespace
 }  // namespace bounce

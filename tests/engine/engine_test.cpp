@@ -247,10 +247,11 @@ namespace bounce {
 namespace {
 
 TEST(CommandLine, UnrealSingleDashOptionsBecomeLongOptions) {
-  const char* argv[] = {"app", "-set", "r.X=1", "-ini=extra.ini", "--gi", "VXGI", "-h", "-5", "-SET=r.Y=a=b", "scene.gltf"};
+  const char* argv[] = {"app",  "-set", "r.X=1", "-ini=extra.ini", "--gi",
+                        "VXGI", "-h",   "-5",    "-SET=r.Y=a=b",   "scene.gltf"};
   EXPECT_EQ(normalizeCommandLine(10, argv),
-            (std::vector<std::string>{"app", "--set", "r.X=1", "--ini", "extra.ini", "--gi", "VXGI", "-h", "-5",
-                                      "--SET", "r.Y=a=b", "scene.gltf"}));
+            (std::vector<std::string>{"app", "--set", "r.X=1", "--ini", "extra.ini", "--gi", "VXGI", "-h",
+                                      "-5", "--SET", "r.Y=a=b", "scene.gltf"}));
 }
 
 TEST(Engine, BadValuesInIniOptionsAreCommandLineErrorsUnlessKeepGoing) {
@@ -302,6 +303,27 @@ TEST(Engine, BadValuesInIniOptionsAreCommandLineErrorsUnlessKeepGoing) {
   EXPECT_TRUE(e.commandLineErrors().empty()) << e.commandLineErrors().front();
   EXPECT_GE(log.count(log::Level::Error, "r.Bloom.Intensity: 'nan' is not a finite number"), 1u)
       << log.joined();
+}
+
+TEST(Engine, ThousandsOfUnknownSettingsAreReportedAsTwentyLinesAndASummary) {
+  // 200,000 unknown sections printed 200,000 lines; a megabyte key printed a megabyte.
+  ScratchProject p;
+  p.write("config/BaseEngine.ini", "[SystemSettings]\n");
+  std::string text = "[SystemSettings]\n" + std::string(1 << 20, 'k') + "=1\n";
+  for (int i = 0; i < 1000; ++i) text += "[Unknown" + std::to_string(i) + "]\nKey=1\n";
+  p.write("many.ini", text);
+  const std::string file = (p.root() / "many.ini").string();
+  EngineOptions o = optionsFor(p);
+  o.iniFiles = {file};
+  log::Capture log;
+  Engine e(o);
+  std::string all;
+  for (const std::string& s : e.commandLineErrors()) all += s + "\n";
+  EXPECT_EQ(e.commandLineErrors().size(), 21u) << all.substr(0, 2000);
+  EXPECT_NE(all.find(file + ":4: unknown section [Unknown0]"), std::string::npos) << all.substr(0, 2000);
+  EXPECT_NE(all.find("and 981 more unknown settings"), std::string::npos) << all.substr(0, 2000);
+  EXPECT_NE(all.find("(1048576 bytes)"), std::string::npos) << "the megabyte key is cut";
+  EXPECT_LT(all.size(), 10000u) << "the report stays a screenful";
 }
 
 TEST(Engine, RequestedPluginsThatFailToStartAreCommandLineErrorsUnlessKeepGoing) {

@@ -259,22 +259,38 @@ void Engine::reportUnclaimedSettings() {
     }
     return nullptr;
   };
+  std::vector<std::string> knownSections{"SystemSettings", "Plugins"};
+  for (const CVar* c : cvars_.list())
+    if (!c->ini().empty()) knownSections.push_back(c->ini().section);
+  // A file of thousands of unknown settings is one mistake, not thousands: the first
+  // few are reported one by one, the rest in one line (a line each buried the terminal).
+  constexpr size_t kReportedOneByOne = 20;
+  size_t reported = 0, unreported = 0;
+  std::string firstUnreported;
+  bool unreportedFromCommandLine = false, unreportedFromIniOption = false;
   for (const CVarRegistry::Deferred& d : cvars_.deferred()) {
     if (const PluginDescriptor* p = ownedByAbsentPlugin(d)) {
       log::debug("{}: '{}' is for plugin {}, which is not loaded", d.source, d.key, p->name);
       continue;
     }
+    if (reported == kReportedOneByOne) {
+      if (unreported++ == 0) firstUnreported = d.source;
+      unreportedFromCommandLine = unreportedFromCommandLine || d.by == SetBy::CommandLine;
+      unreportedFromIniOption =
+          unreportedFromIniOption || (d.by == SetBy::UserIni && fromIniOption(d.source));
+      continue;
+    }
+    ++reported;
     std::string message;
     if (d.section.empty()) {
-      message = fmt::format("unknown console variable '{}'{}", d.key, didYouMean(d.key, cvars_.names()));
+      message = fmt::format("unknown console variable '{}'{}", abbreviated(d.key),
+                            didYouMean(d.key, cvars_.names()));
     } else if (cvars_.hasSection(d.section)) {
-      message = fmt::format("unknown key '{}' in [{}]{}", d.key, d.section,
+      message = fmt::format("unknown key '{}' in [{}]{}", abbreviated(d.key), abbreviated(d.section),
                             didYouMean(d.key, cvars_.keysInSection(d.section)));
     } else {
-      std::vector<std::string> known{"SystemSettings", "Plugins"};
-      for (const CVar* c : cvars_.list())
-        if (!c->ini().empty()) known.push_back(c->ini().section);
-      message = fmt::format("unknown section [{}]{}", d.section, didYouMean(d.section, known));
+      message =
+          fmt::format("unknown section [{}]{}", abbreviated(d.section), didYouMean(d.section, knownSections));
     }
     if (d.by == SetBy::CommandLine) {
       commandLineErrors_.push_back(message);
@@ -283,6 +299,18 @@ void Engine::reportUnclaimedSettings() {
       requestFailed(fmt::format("{}: {}", d.source, message));
     } else {
       log::warn("{}: {}", d.source, message);
+    }
+  }
+  if (unreported > 0) {
+    const std::string summary =
+        fmt::format("{}: and {} more unknown settings, not listed one by one", firstUnreported, unreported);
+    if (unreportedFromCommandLine) {
+      commandLineErrors_.push_back(summary);
+    } else if (unreportedFromIniOption) {
+      log::error("{}", summary);
+      requestFailed(summary);
+    } else {
+      log::warn("{}", summary);
     }
   }
 }

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdint>
 #include <numeric>
+#include <string>
 
 namespace bounce {
 namespace {
@@ -167,6 +168,14 @@ std::string printable(std::string_view text, bool multiLine) {
     }
   }
   return out;
+}
+
+std::string abbreviated(std::string_view text, size_t maxLength) {
+  if (text.size() <= maxLength) return printable(text);
+  // Cut at a UTF-8 character boundary so the kept part stays valid text.
+  size_t cut = maxLength;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0u) == 0x80u) --cut;
+  return printable(text.substr(0, cut)) + "… (" + std::to_string(text.size()) + " bytes)";
 }
 
 }  // namespace bounce

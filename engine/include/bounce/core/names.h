@@ -38,4 +38,8 @@ std::string didYouMean(std::string_view name, std::span<const std::string> candi
 /// such as shader errors use); quote user input with it wherever a message bypasses the log.
 std::string printable(std::string_view text, bool multiLine = false);
 
+/// `text` for a one-line message: printable(), and past `maxLength` bytes cut with
+/// "… (N bytes)", so a megabyte of input named in an error stays one readable line.
+std::string abbreviated(std::string_view text, size_t maxLength = 120);
+
 }  // namespace bounce
