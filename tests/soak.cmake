@@ -22,8 +22,3 @@ if(TARGET bounce-soak)
       LABELS soak TIMEOUT 600)
   endforeach()
 endif()
-
-# bounce-soak's statistics are unit-tested with the other benchmark code.
-if(TARGET bounce_bench_tests)
-  target_sources(bounce_bench_tests PRIVATE ${PROJECT_SOURCE_DIR}/engine/apps/bounce-soak/soak_statistics.cpp)
-endif()
