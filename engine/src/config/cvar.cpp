@@ -1,4 +1,5 @@
 #include "bounce/config/cvar.h"
+#include "config/cvar_range_text.h"
 
 #include "bounce/core/names.h"
 
@@ -136,10 +137,6 @@ std::optional<CVarValue> CVar::parse(std::string_view text, std::string* error) 
   return fail("unsupported type");
 }
 
-namespace {
-
-enum class RangeOutcome { Inside, Clamped, Refused };
-
 std::string rangeText(const CVar& c) {
   auto num = [&](double v) {
     return c.type() == CVarType::Int ? fmt::format("{}", int64_t(v)) : fmt::format("{}", v);
@@ -148,6 +145,10 @@ std::string rangeText(const CVar& c) {
   if (c.min()) return fmt::format("[{}, ...]", num(*c.min()));
   return fmt::format("[..., {}]", num(*c.max()));
 }
+
+namespace {
+
+enum class RangeOutcome { Inside, Clamped, Refused };
 
 /// Checks `*x` (shown as `shown`) against the variable's range in double precision, so
 /// the test happens before the value is narrowed to int32 or float.

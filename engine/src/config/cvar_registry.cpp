@@ -1,4 +1,5 @@
 #include "bounce/config/cvar_registry.h"
+#include "config/cvar_range_text.h"
 
 #include "bounce/core/log.h"
 #include "bounce/core/names.h"
@@ -29,15 +30,6 @@ double numeric(const CVarValue& v) {
 }
 
 bool isNumeric(CVarType t) { return t == CVarType::Int || t == CVarType::Float; }
-
-std::string rangeText(const CVar& c) {
-  auto num = [&](double v) {
-    return c.type() == CVarType::Int ? fmt::format("{}", int64_t(v)) : fmt::format("{}", v);
-  };
-  if (c.min() && c.max()) return fmt::format("[{}, {}]", num(*c.min()), num(*c.max()));
-  if (c.min()) return fmt::format("[{}, ...]", num(*c.min()));
-  return fmt::format("[..., {}]", num(*c.max()));
-}
 
 }  // namespace
 
