@@ -15,6 +15,7 @@ if(TARGET bounce-soak)
   foreach(technique VXGI Ambient)
     add_test(NAME soak.${technique}
              COMMAND bounce-soak --scene ${PROJECT_SOURCE_DIR}/content/cornell_box.gltf --gi ${technique}
+                     --ini ${PROJECT_SOURCE_DIR}/config/Soak.ini
                      --frames 300 --size 64 --validation --progress 0
                      --max-rss-growth 2 --max-rss-slope -1 --max-device-growth 0)
     set_tests_properties(soak.${technique} PROPERTIES

@@ -12,7 +12,8 @@
 // whose blend weight changes, the smallest object moves and the first light switches
 // off and on (soak_animation.h). Each technique runs in a fresh engine on one device;
 // techniques whose defaults are far too slow for thousands of frames run at the cheap
-// settings listed in kCheapSettings (any --set overrides them).
+// settings of config/Soak.ini, the default --ini (the engine names no technique; any
+// --set overrides them).
 //
 // Memory is judged over the second half of the run, when every state of the animation
 // has been seen: the least-squares slope of the RSS, the RSS growth, and the growth of
@@ -44,20 +45,6 @@ constexpr int kBadInput = 2;
 constexpr int kValidationErrors = 3;
 constexpr int kSoakFailure = 4;
 
-/// Settings that keep a technique affordable for 10,000 frames at 64²: the path tracer
-/// traces one sample per pixel and path of at most two bounces per frame (the camera moves
-/// every frame, so it never accumulates more); VXGI uses its smallest clip-maps.
-struct CheapSettings {
-  const char* technique;
-  std::vector<std::string> sets;
-};
-const std::vector<CheapSettings> kCheapSettings = {
-    {"Reference", {"r.Reference.SamplesPerPixel=1", "r.Reference.MaxBounces=2"}},
-    // The default 128³ clip-maps re-voxelize for about 20 s a frame on lavapipe while the
-    // camera and an object move (measured); 32³ with three levels takes about 0.35 s.
-    {"VXGI", {"r.VXGI.MapSize=32", "r.VXGI.StackLevels=3"}},
-};
-
 int fail(int status, const std::string& message) {
   fmt::print(stderr, "bounce-soak: {}\n", message);
   return status;
@@ -65,7 +52,8 @@ int fail(int status, const std::string& message) {
 
 struct Options {
   std::string scene = "content/cornell_box.gltf";
-  std::vector<std::string> techniques, inis, sets;
+  std::vector<std::string> techniques, sets;
+  std::vector<std::string> inis{"config/Soak.ini"};  ///< replaced by any --ini
   uint32_t frames = 10000;
   uint32_t size = 64;
   uint32_t progress = 1000;
@@ -99,11 +87,7 @@ std::optional<bounce::soak::TechniqueSoak> soak(const Options& o, const std::str
   bounce::EngineOptions eo;
   eo.userIni = std::filesystem::path();  // reproducible: no per-user settings
   eo.iniFiles = o.inis;
-  std::vector<std::string> sets;
-  for (const CheapSettings& c : kCheapSettings)
-    if (bounce::equalsIgnoreCase(c.technique, technique)) sets = c.sets;
-  sets.insert(sets.end(), o.sets.begin(), o.sets.end());  // later writes win
-  eo.sets = sets;
+  eo.sets = o.sets;
   eo.technique = technique;
   bounce::Engine engine(std::move(eo));
   if (!engine.commandLineErrors().empty()) {
@@ -116,8 +100,8 @@ std::optional<bounce::soak::TechniqueSoak> soak(const Options& o, const std::str
     return std::nullopt;
   }
   bounce::soak::SoakAnimation animation(*engine.scene(), engine.cvars());
-  fmt::print("{}: {} frames at {}²{}\n", technique, o.frames, o.size,
-             sets.empty() ? std::string() : fmt::format(", {}", fmt::join(sets, " ")));
+  fmt::print("{}: {} frames at {}², ini {}{}\n", technique, o.frames, o.size, fmt::join(o.inis, " "),
+             o.sets.empty() ? std::string() : fmt::format(", {}", fmt::join(o.sets, " ")));
   for (const std::string& line : animation.describe()) fmt::print("  {}\n", line);
   std::fflush(stdout);  // before the progress lines on stderr
 
@@ -191,7 +175,7 @@ int main(int argc, char** argv) {
                  "GI technique, or none (repeatable; default: every one that loads, and none)");
   app.add_option("--frames", o.frames, "Frames per technique")->check(CLI::Range(4u, 10000000u));
   app.add_option("--size", o.size, "Square output size in pixels")->check(CLI::Range(1u, 4096u));
-  app.add_option("--ini", o.inis, "Extra ini file (repeatable)");
+  app.add_option("--ini", o.inis, "Extra ini file (repeatable; replaces the default config/Soak.ini)");
   app.add_option("--set", o.sets, "Console variable NAME=VALUE for every technique (repeatable)");
   app.add_option("--device", o.device, "Vulkan device name (substring)");
   app.add_flag("--validation", o.validation, "Vulkan validation layer on; any message fails the run");
