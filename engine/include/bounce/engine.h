@@ -45,7 +45,10 @@ struct EngineOptions {
 /// The engine's own passes, placed between the extension points by FrameBuilder
 /// (implemented by the renderer).
 struct EngineStages {
-  std::function<void(RenderGraph&, const FrameContext&)> geometry;     ///< shadows, G-buffer
+  /// Scene data every extension point may read: lights, shadow maps, the ray-tracing
+  /// scene (each built only when some pass reads it).
+  std::function<void(RenderGraph&, const FrameContext&)> sceneSetup;
+  std::function<void(RenderGraph&, const FrameContext&)> geometry;     ///< G-buffer
   std::function<void(RenderGraph&, const FrameContext&)> lighting;     ///< direct lighting, GI composite
   std::function<void(RenderGraph&, const FrameContext&)> postProcess;  ///< bloom, tone mapping
   std::function<void(RenderGraph&, const FrameContext&)> output;       ///< marks the frame's outputs

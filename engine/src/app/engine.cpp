@@ -369,6 +369,7 @@ std::vector<Engine::HookTiming> Engine::buildFrame(RenderGraph& graph, const Fra
       timings.push_back({hook->desc.name, hook->origin, elapsed.count()});
     }
   };
+  engineStage(stages.sceneSetup);
   hooksAt(ExtensionPoint::FrameBegin);
   engineStage(stages.geometry);
   hooksAt(ExtensionPoint::AfterGBuffer);

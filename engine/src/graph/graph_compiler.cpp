@@ -173,6 +173,7 @@ class GraphCompiler {
   }
 
   std::string unreadReason(size_t pass) const {
+    if (!g_.passes_[pass].unreadReason.empty()) return g_.passes_[pass].unreadReason;
     std::vector<std::string> written;
     for (const Use& u : g_.passes_[pass].uses)
       if (u.write) {

@@ -65,6 +65,8 @@ void PassBuilder::condition(std::function<PassDecision()> decide) {
 
 void PassBuilder::sideEffect(std::string why) { graph_.passes_[pass_].sideEffect = std::move(why); }
 
+void PassBuilder::whenUnread(std::string why) { graph_.passes_[pass_].unreadReason = std::move(why); }
+
 // --- RenderGraph ----------------------------------------------------------------------
 
 uint32_t RenderGraph::addResource(Resource resource) {

@@ -75,6 +75,7 @@ const std::vector<std::string>& aovNames() {
 
 EngineStages DeferredPipeline::stages(const FrameOutputs& outputs, Readbacks* readbacks) const {
   EngineStages s;
+  s.sceneSetup = [this](RenderGraph& g, const FrameContext& f) { sceneSetup(g, f); };
   s.geometry = [this](RenderGraph& g, const FrameContext& f) { geometry(g, f); };
   s.lighting = [this](RenderGraph& g, const FrameContext& f) { lighting(g, f); };
   s.postProcess = [this](RenderGraph& g, const FrameContext& f) { postProcess(g, f); };
@@ -84,7 +85,7 @@ EngineStages DeferredPipeline::stages(const FrameOutputs& outputs, Readbacks* re
   return s;
 }
 
-void DeferredPipeline::geometry(RenderGraph& g, const FrameContext& frame) const {
+void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) const {
   Blackboard& bb = g.blackboard();
   const uint32_t mapSize = uint32_t(settings_.shadowMapSize.get());
   auto lights = std::make_shared<const LightSetup>(LightSetup::build(frame.scene, mapSize));
@@ -99,8 +100,8 @@ void DeferredPipeline::geometry(RenderGraph& g, const FrameContext& frame) const
     BufferHandle lightBuf = b.write(b.createBuffer("scene.lights", {lightBytes}), Access::TransferDst);
     BufferHandle matrixBuf =
         b.write(b.createBuffer("scene.shadowMatrices", {matrixBytes}), Access::TransferDst);
-    bb.setBuffer("scene.lights", lightBuf);
-    bb.setBuffer("scene.shadowMatrices", matrixBuf);
+    bb.setBuffer(channels::SceneLights, lightBuf);
+    bb.setBuffer(channels::ShadowMatrices, matrixBuf);
     b.condition([lights] { return PassDecision::run(fmt::format("{} lights", lights->lights.size())); });
     return [=](PassContext& ctx) {
       if (!lights->lights.empty())
@@ -148,7 +149,10 @@ void DeferredPipeline::geometry(RenderGraph& g, const FrameContext& frame) const
       }
     };
   });
+}
 
+void DeferredPipeline::geometry(RenderGraph& g, const FrameContext& frame) const {
+  Blackboard& bb = g.blackboard();
   const size_t triangles = frame.scene.triangleCount();
   const glm::mat4 viewProjection = frame.view.viewProjection;
   g.addPass("GBuffer", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
@@ -209,8 +213,8 @@ void DeferredPipeline::lighting(RenderGraph& g, const FrameContext& frame) const
     TextureHandle material = b.read(bb.texture(channels::GBufferMaterial), Access::Sampled);
     TextureHandle emissive = b.read(bb.texture(channels::GBufferEmissive), Access::Sampled);
     TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
-    BufferHandle lights = b.read(bb.buffer("scene.lights"), Access::StorageRead);
-    BufferHandle matrices = b.read(bb.buffer("scene.shadowMatrices"), Access::StorageRead);
+    BufferHandle lights = b.read(bb.buffer(channels::SceneLights), Access::StorageRead);
+    BufferHandle matrices = b.read(bb.buffer(channels::ShadowMatrices), Access::StorageRead);
     TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
     // Whatever GI channels plugins produced; none costs nothing.
     TextureHandle diffuse = b.readOptional(bb.texture(channels::IndirectDiffuse), Access::Sampled);

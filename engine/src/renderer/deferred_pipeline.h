@@ -44,6 +44,7 @@ class DeferredPipeline {
   EngineStages stages(const FrameOutputs& outputs, Readbacks* readbacks) const;
 
  private:
+  void sceneSetup(RenderGraph& graph, const FrameContext& frame) const;
   void geometry(RenderGraph& graph, const FrameContext& frame) const;
   void lighting(RenderGraph& graph, const FrameContext& frame) const;
   void postProcess(RenderGraph& graph, const FrameContext& frame) const;

@@ -3,6 +3,7 @@
 // view-projection per shadow-map layer (directional and spot lights one layer each,
 // point lights six cube faces).
 
+#include "bounce/gpu/gpu_light.h"
 #include "bounce/scene/scene.h"
 
 #include <glm/glm.hpp>
@@ -10,15 +11,6 @@
 #include <vector>
 
 namespace bounce {
-
-/// std430 `Light` in bounce/lights.glsl.
-struct GpuLight {
-  glm::vec4 positionRange;
-  glm::vec4 directionType;
-  glm::vec4 intensity;  ///< w: first shadow layer, -1 for none
-  glm::vec4 params;     ///< cos inner, cos outer, normal offset (m), shadow texel size at 1 m
-};
-static_assert(sizeof(GpuLight) == 64);
 
 struct LightSetup {
   std::vector<GpuLight> lights;

@@ -28,6 +28,7 @@ Renderer::Renderer(Engine& engine, const gpu::Device& device, RendererOptions op
   scene_ = std::make_unique<gpu::GpuScene>(device);
   executor_ = std::make_unique<gpu::GraphExecutor>(device, *pipelines_);
   pipeline_ = std::make_unique<DeferredPipeline>(engine.rendererSettings(), engine.aovs(), &device);
+  rayTracing_ = std::make_unique<RayTracingScenePass>();
 }
 
 Renderer::~Renderer() { vkDeviceWaitIdle(device_.handle()); }
@@ -40,7 +41,12 @@ RenderedFrame Renderer::render(const FrameView& view, const FrameOutputs& output
   PostProcessSettings pp = PostProcessSettings::blend(*scene, engine_.cvars(), view.position, &out.warnings);
   FrameContext frame{*scene, engine_.cvars(), view, pp, frameIndex, engine_.technique()};
   RenderGraph graph;
-  out.cpu = engine_.buildFrame(graph, frame, pipeline_->stages(outputs, &readbacks_));
+  EngineStages stages = pipeline_->stages(outputs, &readbacks_);
+  stages.sceneSetup = [this, lights = std::move(stages.sceneSetup)](RenderGraph& g, const FrameContext& f) {
+    lights(g, f);
+    rayTracing_->declare(g, f);
+  };
+  out.cpu = engine_.buildFrame(graph, frame, stages);
   out.gpu = gpu::runFrame(*executor_, graph, frame, *scene_, &out.graph);
 
   auto want = [&](const std::string& name) {

@@ -10,6 +10,7 @@
 #include "bounce/gpu/shader_compiler.h"
 #include "bounce/image/image_buffer.h"
 #include "gpu/graph_executor.h"
+#include "raytracing/ray_tracing_pass.h"
 #include "renderer/deferred_pipeline.h"
 
 #include <filesystem>
@@ -48,6 +49,8 @@ class Renderer {
   gpu::PipelineCache& pipelines() { return *pipelines_; }
   gpu::GpuScene& gpuScene() { return *scene_; }
   gpu::GraphExecutor& executor() { return *executor_; }
+  /// The scene's acceleration structure (built when a pass traces rays).
+  const rt::RayTracingScene& rayTracingScene() const { return rayTracing_->scene(); }
   const gpu::Device& device() const { return device_; }
 
   static std::filesystem::path defaultShaderCache();
@@ -62,6 +65,7 @@ class Renderer {
   std::unique_ptr<gpu::GpuScene> scene_;
   std::unique_ptr<gpu::GraphExecutor> executor_;
   std::unique_ptr<DeferredPipeline> pipeline_;
+  std::unique_ptr<RayTracingScenePass> rayTracing_;
   Readbacks readbacks_;
 };
 

@@ -91,6 +91,7 @@ uint32_t Scene::addMesh(Mesh mesh) {
   meshes_.push_back(std::move(mesh));
   const auto index = uint32_t(meshes_.size() - 1);
   record(SceneChange::Geometry, index, {}, {});
+  meshRevisions_.push_back(revision_);
   return index;
 }
 
@@ -158,6 +159,30 @@ void Scene::setInstanceTransform(uint32_t instance, const glm::mat4& world) {
     target.worldBounds.extend(primitive.bounds.transformed(world));
   }
   record(SceneChange::Transform, instance, before, target.worldBounds);
+}
+
+void Scene::editMesh(uint32_t mesh, const std::function<void(Mesh&)>& edit) {
+  checkIndex(meshes_, mesh, "mesh");
+  auto instancesOf = [this, mesh] {
+    Aabb out;
+    for (const MeshInstance& instance : instances_)
+      if (instance.mesh == mesh) out.extend(instance.worldBounds);
+    return out;
+  };
+  const Aabb before = instancesOf();
+  edit(meshes_[mesh]);
+  for (MeshPrimitive& primitive : meshes_[mesh].primitives) {
+    primitive.bounds = Aabb{};
+    for (const glm::vec3& p : primitive.positions) primitive.bounds.extend(p);
+  }
+  for (MeshInstance& instance : instances_) {
+    if (instance.mesh != mesh) continue;
+    instance.worldBounds = Aabb{};
+    for (const MeshPrimitive& primitive : meshes_[mesh].primitives)
+      instance.worldBounds.extend(primitive.bounds.transformed(instance.world));
+  }
+  record(SceneChange::Geometry, mesh, before, instancesOf());
+  meshRevisions_[mesh] = revision_;
 }
 
 void Scene::editMaterial(uint32_t material, const std::function<void(Material&)>& edit) {

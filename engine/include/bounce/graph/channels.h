@@ -17,7 +17,18 @@ inline constexpr std::string_view GBufferMaterial =
 inline constexpr std::string_view GBufferEmissive = "gbuffer.emissive";  ///< RGBA16F: emitted radiance
 inline constexpr std::string_view GBufferDepth = "gbuffer.depth";        ///< D32: depth (0 near, 1 far)
 
-inline constexpr std::string_view ShadowMaps = "scene.shadowMaps";  ///< the lights' shadow maps
+// Lights, available from FrameBegin on (bounce/lights.glsl, bounce/shadows.glsl).
+inline constexpr std::string_view ShadowMaps = "scene.shadowMaps";  ///< the lights' shadow maps (D32 array)
+inline constexpr std::string_view SceneLights = "scene.lights";     ///< `Light` array (gpu::GpuLight)
+inline constexpr std::string_view ShadowMatrices = "scene.shadowMatrices";  ///< mat4 per shadow-map layer
+
+// The scene's ray-tracing data, available from FrameBegin on; built and uploaded only
+// when a pass reads it (bounce/raytracing/ray_tracing.h declares and binds all five).
+inline constexpr std::string_view RayTracingNodes = "rt.nodes";
+inline constexpr std::string_view RayTracingTriangles = "rt.triangles";
+inline constexpr std::string_view RayTracingAttributes = "rt.attributes";
+inline constexpr std::string_view RayTracingInstances = "rt.instances";
+inline constexpr std::string_view RayTracingMaterials = "rt.materials";
 
 // GI channels (published by plugins), view-sized, linear HDR.
 /// Indirect diffuse irradiance E in W/m² arriving at the visible surface (RGBA16F);

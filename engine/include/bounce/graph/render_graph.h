@@ -74,6 +74,9 @@ class PassBuilder {
   /// The pass has effects outside the graph (read-back, present): never culled for
   /// lack of readers.
   void sideEffect(std::string why);
+  /// What the report says when the pass is culled because nobody reads its results
+  /// (default: "nothing reads its results (names)"), e.g. "no pass traces rays".
+  void whenUnread(std::string why);
 
  private:
   friend class RenderGraph;
@@ -126,7 +129,8 @@ class RenderGraph {
     std::string origin;
     std::vector<Use> uses;
     std::vector<std::function<PassDecision()>> conditions;
-    std::string sideEffect;  ///< non-empty: never culled for lack of readers
+    std::string sideEffect;    ///< non-empty: never culled for lack of readers
+    std::string unreadReason;  ///< report text when culled for lack of readers (empty: default)
     RecordFn record;
     std::vector<std::string> errors;  ///< misuse found during setup; the pass is culled
   };

@@ -62,6 +62,9 @@ class Scene {
 
   // --- editing (tracked) ----------------------------------------------------------------
   void setInstanceTransform(uint32_t instance, const glm::mat4& world);
+  /// Edits a mesh's geometry (a Geometry change covering every instance of it); the
+  /// primitives' bounds are recomputed and the mesh's revision increases.
+  void editMesh(uint32_t mesh, const std::function<void(Mesh&)>& edit);
   void editMaterial(uint32_t material, const std::function<void(Material&)>& edit);
   void editLight(uint32_t light, const std::function<void(Light&)>& edit);
   void editCamera(uint32_t camera, const std::function<void(Camera&)>& edit);
@@ -72,6 +75,11 @@ class Scene {
   uint64_t revision() const { return revision_; }
   /// Revision of the latest change of one kind.
   uint64_t revision(SceneChange kind) const { return kindRevision_[size_t(kind)]; }
+  /// Revision at which a mesh was added or last edited (per-mesh caches, such as a
+  /// bottom-level BVH, compare it).
+  uint64_t meshRevision(uint32_t mesh) const {
+    return mesh < meshRevisions_.size() ? meshRevisions_[mesh] : 0;
+  }
   /// Changes after `revision`, oldest first; nullopt when older records were dropped
   /// (treat as "everything changed"). Keeps the last few thousand records.
   std::optional<std::vector<SceneChangeRecord>> changesSince(uint64_t revision) const;
@@ -83,6 +91,7 @@ class Scene {
   std::vector<Texture> textures_;
   std::vector<Material> materials_;
   std::vector<Mesh> meshes_;
+  std::vector<uint64_t> meshRevisions_;
   std::vector<MeshInstance> instances_;
   std::vector<Light> lights_;
   std::vector<Camera> cameras_;

@@ -1,0 +1,290 @@
+// bounce-ray-bench: the engine's scene ray tracing on the device against Embree on the
+// CPU, the same rays in the same run. A benchmark, not a test: it prints a table (and
+// writes it as JSON) with the device's and Embree's rays per second (median of --runs),
+// their ratio, the hit/miss disagreements, the BVH build time and bytes per triangle.
+//
+//   bounce-ray-bench [--scene F.gltf | --generate TRIANGLES] [--rays N]
+//                    [--kind camera|probe] [--any-hit] [--runs N] [--json FILE]
+//                    [--device NAME]
+//
+// lavapipe runs on the same cores as Embree, so Embree's rate on all of them is the
+// physical reference ("ratio"); Embree on one thread is printed too. Exit status: 0, 1
+// no usable Vulkan device, 2 bad arguments or input.
+
+#include "bounce/core/log.h"
+#include "bounce/engine.h"
+#include "bounce/gpu/device.h"
+#include "bounce/gpu/pass_context.h"
+#include "bounce/raytracing/ray_tracing.h"
+#include "raytracing/embree_reference.h"
+#include "raytracing/ray_sets.h"
+#include "renderer/renderer.h"
+#include "scene/generated_meshes.h"
+
+#include "parse_arguments.h"
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <thread>
+
+namespace {
+
+using namespace bounce;
+
+struct Options {
+  std::string scene = "content/cornell_box.gltf";
+  uint32_t generate = 0;
+  uint32_t rays = 1u << 18;
+  std::string kind = "probe";
+  bool anyHit = false;
+  uint32_t runs = 5;
+  std::string json;
+  std::string device;
+};
+
+struct BenchHit {
+  float t;
+  uint32_t instance, triangle, flags;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+/// A bumpy sphere of about `triangles` triangles inside a room.
+std::unique_ptr<Scene> generatedScene(uint32_t triangles) {
+  auto s = std::make_unique<Scene>();
+  Material white;
+  white.name = "white";
+  white.baseColorFactor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+  const uint32_t m = s->addMaterial(white);
+  const auto rings = uint32_t(std::max(4.0, std::sqrt(double(triangles) / 2.0)));
+  const uint32_t segments = std::max(4u, triangles / (2 * rings));
+  s->addInstance(
+      {.name = "sphere", .mesh = s->addMesh(generated::bumpySphere(rings, segments, 1.0f, 0.08f, m))});
+  s->addInstance({.name = "room", .mesh = s->addMesh(generated::box({6.0f, 4.0f, 6.0f}, true, m, "room"))});
+  return s;
+}
+
+std::vector<rt::Ray> makeRays(const Scene& scene, const Options& o) {
+  const Aabb b = scene.bounds();
+  if (o.kind == "camera") {
+    const auto side = uint32_t(std::ceil(std::sqrt(double(o.rays))));
+    FrameView v = FrameView::fromCamera(scene.cameras().empty() ? Camera{} : scene.cameras().front(), 16, 16);
+    glm::vec3 eye = v.position, target = b.center();
+    if (scene.cameras().empty()) eye = b.center() + glm::vec3(0.45f, 0.2f, 0.45f) * b.size();
+    std::vector<rt::Ray> rays = rt::cameraRays(eye, target, side);
+    rays.resize(o.rays);
+    return rays;
+  }
+  Aabb inner;
+  inner.extend(b.min + 0.05f * b.size());
+  inner.extend(b.max - 0.05f * b.size());
+  const uint32_t perProbe = 128;
+  const auto probes = uint32_t(std::ceil(std::cbrt(double(o.rays) / perProbe)));
+  std::vector<rt::Ray> rays = rt::probeRays(inner, probes, perProbe);
+  rays.resize(o.rays);
+  return rays;
+}
+
+struct DeviceRun {
+  std::vector<double> milliseconds;
+  std::vector<BenchHit> hits;
+  rt::BuildStats build;  ///< of the first frame, which built the acceleration structure
+};
+
+DeviceRun traceOnDevice(Engine& engine, Renderer& renderer, const gpu::Device& device,
+                        const std::vector<rt::Ray>& rays, const Options& o) {
+  DeviceRun run;
+  const uint64_t rayBytes = rays.size() * sizeof(rt::Ray), hitBytes = rays.size() * sizeof(BenchHit);
+  gpu::Buffer readback(device, hitBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUsage::Readback,
+                       "bench.hits");
+  engine.hooks().add(
+      {.name = "RayBench",
+       .point = ExtensionPoint::FrameBegin,
+       .setup =
+           [&](RenderGraph& g, const FrameContext&) {
+             BufferHandle rayBuf, hits;
+             g.addPass("RayBench.Rays", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+               rayBuf = b.write(b.createBuffer("bench.rays", {rayBytes}), Access::TransferDst);
+               return [=, &rays](PassContext& ctx) { ctx.upload(rayBuf, rays.data(), rayBytes); };
+             });
+             g.addPass("RayBench.Trace", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+               RayTracingSceneHandles rt = readRayTracingScene(b, g.blackboard());
+               BufferHandle in = b.read(rayBuf, Access::StorageRead);
+               hits = b.write(b.createBuffer("bench.hits", {hitBytes}), Access::StorageWrite);
+               return [=, &o](PassContext& ctx) {
+                 const gpu::Pipeline& p =
+                     ctx.pipelines().compute({"engine/apps/bounce-ray-bench/trace_rays.comp", {}});
+                 gpu::Bindings bindings;
+                 bindRayTracingScene(bindings, rt).buffer("Rays", in).buffer("Hits", hits);
+                 const uint32_t push[2] = {uint32_t(rays.size()), o.anyHit ? 1u : 0u};
+                 ctx.dispatchThreads(p, bindings, {uint32_t(rays.size()), 1, 1}, push, sizeof push);
+               };
+             });
+             g.addPass("RayBench.Readback", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+               BufferHandle src = b.read(hits, Access::TransferSrc);
+               b.sideEffect("benchmark read-back");
+               return [=, &readback](PassContext& ctx) {
+                 VkBufferCopy copy{0, 0, hitBytes};
+                 vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(src).handle(), readback.handle(), 1, &copy);
+               };
+             });
+           }},
+      kEngineOwner, "bounce-ray-bench", "");
+  const FrameView view = FrameView::fromCamera(Camera{}, 8, 8);
+  // Frame 0 builds the BVH and compiles the kernel; the runs after it are timed.
+  for (uint32_t frame = 0; frame <= o.runs; ++frame) {
+    RenderedFrame f = renderer.render(view, {}, frame);
+    if (!f.gpu.ok()) throw std::runtime_error(f.gpu.errors.front());
+    if (frame == 0) {
+      run.build = renderer.rayTracingScene().stats();
+      continue;
+    }
+    for (const gpu::PassTiming& t : f.gpu.passes)
+      if (t.name == "RayBench.Trace") run.milliseconds.push_back(t.milliseconds);
+  }
+  engine.hooks().removeOwnedBy(kEngineOwner);
+  run.hits.resize(rays.size());
+  std::memcpy(run.hits.data(), readback.mapped(), hitBytes);
+  return run;
+}
+
+/// Embree's rtcIntersect1 (or rtcOccluded1 through intersect's tfar) over the rays on
+/// `threads` threads; returns the median milliseconds and the hits of the last run.
+double traceWithEmbree(const rt::EmbreeReference& reference, const std::vector<rt::Ray>& rays,
+                       uint32_t threads, uint32_t runs, std::vector<rt::ReferenceHit>& hits) {
+  hits.assign(rays.size(), {});
+  std::vector<double> ms;
+  for (uint32_t r = 0; r < runs; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::thread> pool;
+    for (uint32_t t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        for (size_t i = t; i < rays.size(); i += threads)
+          hits[i] = reference.intersect(glm::vec3(rays[i].origin), glm::vec3(rays[i].direction),
+                                        rays[i].origin.w, rays[i].direction.w);
+      });
+    for (std::thread& th : pool) th.join();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return median(ms);
+}
+
+int run(const Options& o) {
+  EngineOptions eo;
+  eo.userIni = std::filesystem::path();
+  eo.technique = "none";
+  Engine engine(std::move(eo));
+  if (auto failure = app::commandLineFailure(engine, "bounce-ray-bench")) return *failure;
+  std::string sceneName = o.scene;
+  if (o.generate > 0) {
+    engine.setScene(generatedScene(o.generate));
+    sceneName = fmt::format("generated ({} triangles)", engine.scene()->triangleCount());
+  } else {
+    GltfLoadResult r = engine.loadScene(o.scene);
+    if (!r.scene && !engine.scene()) {
+      app::printError("bounce-ray-bench", r.error);
+      return 2;
+    }
+  }
+  std::string error;
+  std::unique_ptr<gpu::Device> device = gpu::Device::create({.preferredDevice = o.device}, &error);
+  if (!device) {
+    app::printError("bounce-ray-bench", error);
+    return 1;
+  }
+  Renderer renderer(engine, *device);
+  const Scene& scene = *engine.scene();
+  const std::vector<rt::Ray> rays = makeRays(scene, o);
+
+  DeviceRun dev = traceOnDevice(engine, renderer, *device, rays, o);
+  const rt::RayTracingScene& rts = renderer.rayTracingScene();
+  const rt::BuildStats& stats = dev.build;
+
+  rt::EmbreeReference reference(scene);
+  std::vector<rt::ReferenceHit> ref;
+  const uint32_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const double embreeOneMs = traceWithEmbree(reference, rays, 1, o.runs, ref);
+  const double embreeAllMs = traceWithEmbree(reference, rays, cores, o.runs, ref);
+  uint64_t disagreements = 0, hits = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const bool h = dev.hits[i].flags & 1u;
+    disagreements += h != ref[i].hit;
+    hits += h;
+  }
+  const double deviceMs = median(dev.milliseconds);
+  auto rate = [&](double ms) { return ms > 0.0 ? double(rays.size()) / (ms * 1e-3) : 0.0; };
+  const uint64_t triangles = rts.triangles().size();
+  const double bytesPerTriangle = triangles ? double(rts.bytes()) / double(triangles) : 0.0;
+
+  fmt::print("bounce-ray-bench: {} | {} rays, {} ({}), {} runs, device {}\n", sceneName, rays.size(), o.kind,
+             o.anyHit ? "any hit" : "closest hit", o.runs, device->name());
+  fmt::print(
+      "| triangles | BVH build ms (bottom + top) | bytes/triangle | depth | device Mrays/s | Embree Mrays/s "
+      "({} threads) | Embree Mrays/s (1 thread) | device / Embree | hit rate | hit/miss disagreements |\n",
+      cores);
+  fmt::print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  fmt::print("| {} | {:.1f} + {:.2f} | {:.0f} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.3f} | {} |\n",
+             triangles, stats.bottomLevelMs, stats.topLevelMs, bytesPerTriangle, stats.maxDepth,
+             rate(deviceMs) / 1e6, rate(embreeAllMs) / 1e6, rate(embreeOneMs) / 1e6,
+             rate(deviceMs) / std::max(rate(embreeAllMs), 1e-9),
+             double(hits) / double(std::max<size_t>(rays.size(), 1)), disagreements);
+  if (!o.json.empty()) {
+    nlohmann::json j = {{"scene", sceneName},
+                        {"rays", rays.size()},
+                        {"kind", o.kind},
+                        {"anyHit", o.anyHit},
+                        {"runs", o.runs},
+                        {"device", device->name()},
+                        {"triangles", triangles},
+                        {"bottomLevelBuildMs", stats.bottomLevelMs},
+                        {"topLevelBuildMs", stats.topLevelMs},
+                        {"bytes", rts.bytes()},
+                        {"bytesPerTriangle", bytesPerTriangle},
+                        {"depth", stats.maxDepth},
+                        {"deviceMilliseconds", dev.milliseconds},
+                        {"deviceRaysPerSecond", rate(deviceMs)},
+                        {"embreeThreads", cores},
+                        {"embreeRaysPerSecond", rate(embreeAllMs)},
+                        {"embreeSingleThreadRaysPerSecond", rate(embreeOneMs)},
+                        {"deviceToEmbree", rate(deviceMs) / std::max(rate(embreeAllMs), 1e-9)},
+                        {"hitRate", double(hits) / double(std::max<size_t>(rays.size(), 1))},
+                        {"hitMissDisagreements", disagreements}};
+    std::ofstream(o.json) << j.dump(2) << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Scene ray tracing on the device against Embree on the CPU, same rays, same run"};
+  app::acceptUnrealSpellings(app);
+  Options o;
+  app.add_option("--scene", o.scene, "glTF scene (default content/cornell_box.gltf)");
+  app.add_option("--generate", o.generate, "Trace a generated scene of about this many triangles instead")
+      ->check(CLI::Range(1u, 20000000u));
+  app.add_option("--rays", o.rays, "Rays per run (default 262144)")->check(CLI::Range(1u, 1u << 24));
+  app.add_option("--kind", o.kind, "camera: pinhole rays; probe: spherical rays from a grid of probes")
+      ->check(CLI::IsMember({"camera", "probe"}));
+  app.add_flag("--any-hit", o.anyHit, "Visibility rays (stop at the first hit) instead of closest hit");
+  app.add_option("--runs", o.runs, "Timed runs (the median is reported; default 5)")
+      ->check(CLI::Range(1u, 1000u));
+  app.add_option("--json", o.json, "Also write the results to this JSON file");
+  app.add_option("--device", o.device, "Vulkan device name (substring)");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    app::printError("bounce-ray-bench", e.what());
+    return 2;
+  }
+}

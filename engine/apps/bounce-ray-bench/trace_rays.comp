@@ -1,0 +1,48 @@
+#version 460
+// bounce-ray-bench's kernel: one closest-hit (or any-hit) ray per invocation through
+// the engine's GLSL ray-tracing library; hits are read back and compared with Embree.
+#define RAY_TRACING_BINDING 0
+#include "bounce/ray_tracing.glsl"
+
+layout(local_size_x = 64) in;
+
+struct BenchRay {
+  vec4 origin;     // w: tMin
+  vec4 direction;  // w: tMax
+};
+struct BenchHit {
+  float t;
+  uint instance;
+  uint triangle;
+  uint flags;  // 1: hit, 2: front face
+};
+layout(std430, binding = 5) readonly buffer Rays { BenchRay rays[]; };
+layout(std430, binding = 6) writeonly buffer Hits { BenchHit hits[]; };
+
+layout(push_constant) uniform Push {
+  uint rayCount;
+  uint anyHit;
+};
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= rayCount) return;
+  BenchRay r = rays[i];
+  BenchHit o;
+  o.t = 0.0;
+  o.instance = 0u;
+  o.triangle = 0u;
+  o.flags = 0u;
+  if (anyHit != 0u) {
+    o.flags = traceAnyHit(r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w) ? 1u : 0u;
+  } else {
+    RayHit h = traceClosestHit(r.origin.xyz, r.direction.xyz, r.origin.w, r.direction.w);
+    if (h.hit) {
+      o.t = h.t;
+      o.instance = h.instance;
+      o.triangle = h.triangle;
+      o.flags = 1u | (h.frontFace ? 2u : 0u);
+    }
+  }
+  hits[i] = o;
+}

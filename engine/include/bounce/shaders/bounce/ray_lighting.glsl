@@ -1,0 +1,44 @@
+// Direct light at a ray hit: every punctual light of the scene with a shadow ray for
+// visibility. Include after bounce/ray_tracing.glsl and a LIGHTS(binding) declaration
+// (bounce/lights.glsl); `lightCount` is the scene's light count (the lights buffer
+// holds at least one entry even when there are none).
+//
+// Visibility is a shadow ray for every light type, not the shadow maps: measured with
+// bounce-ray-bench (--kind direct), and exact where maps are not — a shadow map's
+// normal offset and texel footprint leak light through walls a few texels thick, the
+// very case probes behind a sunlit wall must get right; its resolution follows the
+// scene's bounds, so small rooms in a large scene get a few texels.
+#ifndef BOUNCE_RAY_LIGHTING_GLSL
+#define BOUNCE_RAY_LIGHTING_GLSL
+
+#include "bounce/lights.glsl"
+
+// Irradiance (W/m²) arriving at `s` from the punctual lights, on the side its normal
+// faces, each light's visibility tested with a shadow ray.
+vec3 directIrradianceAt(RtSurface s, uint lightCount) {
+  vec3 sum = vec3(0.0);
+  for (uint i = 0u; i < lightCount; ++i) {
+    vec3 L, E;
+    float distanceToLight;
+    lightIncidence(lights[i], s.position, L, E, distanceToLight);
+    float cosTheta = dot(s.normal, L);
+    // The geometric normal decides which side is lit: an interpolated normal may lean
+    // towards a light behind the surface.
+    if (cosTheta <= 0.0 || dot(s.geometricNormal, L) <= 0.0 || all(equal(E, vec3(0.0)))) continue;
+    vec3 origin = offsetRayOrigin(s, L);
+    // Stop short of a point light by the same offset: a light on a surface is not
+    // shadowed by that surface.
+    float tMax = distanceToLight >= 1e30 ? 1e30 : distanceToLight - s.rayOffset;
+    if (tMax > 0.0 && traceAnyHit(origin, L, 0.0, tMax)) continue;
+    sum += E * cosTheta;
+  }
+  return sum;
+}
+
+// Radiance the surface reflects from direct light, diffuse part: albedo (1 − metallic)
+// / π × irradiance. Add s.emission for what the surface emits itself.
+vec3 directLightAt(RtSurface s, uint lightCount) {
+  return s.baseColor * (1.0 - s.metallic) * INV_PI * directIrradianceAt(s, lightCount);
+}
+
+#endif
