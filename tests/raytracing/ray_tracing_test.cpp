@@ -152,6 +152,17 @@ TEST_F(RayTracing, NothingIsBuiltWhenNoPassTracesRays) {
   EXPECT_EQ(renderer->rayTracingScene().stats().totalTopLevelBuilds, 0u);
 }
 
+TEST_F(RayTracing, AskingForHardwareRayQueriesFallsBackToTheSoftwareTraversal) {
+  start("content/cornell_box.gltf", {"r.RayTracing.Backend=Hardware"});
+  const FrameView v = view(8, 8);
+  const std::vector<TestRay> rays = cameraRays(v.position, engine->scene()->bounds().center(), 16);
+  TraceResult r = trace(rays, TraceMode::ClosestHit);
+  const std::string report = passReport(r.frame, "RayTracingScene");
+  EXPECT_NE(report.find("software traversal (r.RayTracing.Backend Hardware:"), std::string::npos) << report;
+  const EmbreeReference reference(*engine->scene());
+  EXPECT_EQ(compare(rays, r.hits, reference).hitMissDisagreements, 0u);
+}
+
 TEST_F(RayTracing, MovingAnInstanceRebuildsOnlyTheTopLevelAndHitsFollowIt) {
   startWith(instancedScene());
   Scene& scene = *engine->scene();

@@ -4,8 +4,13 @@
 // their ratio, the hit/miss disagreements, the BVH build time and bytes per triangle.
 //
 //   bounce-ray-bench [--scene F.gltf | --generate TRIANGLES] [--rays N]
-//                    [--kind camera|probe] [--any-hit] [--runs N] [--json FILE]
+//                    [--kind camera|probe] [--any-hit] [--shade none|rays|maps]
+//                    [--lights directional|point|spot] [--runs N] [--json FILE]
 //                    [--device NAME]
+//
+// --shade adds directLightAt at every hit, its visibility from shadow rays or from the
+// engine's shadow maps (what each costs per light type; --lights turns the scene's
+// lights into one type first, keeping position and direction).
 //
 // lavapipe runs on the same cores as Embree, so Embree's rate on all of them is the
 // physical reference ("ratio"); Embree on one thread is printed too. Exit status: 0, 1
@@ -43,6 +48,8 @@ struct Options {
   uint32_t rays = 1u << 18;
   std::string kind = "probe";
   bool anyHit = false;
+  std::string shade = "none";
+  std::string lights;
   uint32_t runs = 5;
   std::string json;
   std::string device;
@@ -51,6 +58,7 @@ struct Options {
 struct BenchHit {
   float t;
   uint32_t instance, triangle, flags;
+  glm::vec4 radiance;
 };
 
 double median(std::vector<double> v) {
@@ -118,6 +126,9 @@ DeviceRun traceOnDevice(Engine& engine, Renderer& renderer, const gpu::Device& d
              });
              g.addPass("RayBench.Trace", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
                RayTracingSceneHandles rt = readRayTracingScene(b, g.blackboard());
+               const SceneLightHandles lights =
+                   o.shade == "none" ? SceneLightHandles{} : readSceneLights(b, g.blackboard());
+               const uint32_t lightCount = uint32_t(engine.scene()->lights().size());
                BufferHandle in = b.read(rayBuf, Access::StorageRead);
                hits = b.write(b.createBuffer("bench.hits", {hitBytes}), Access::StorageWrite);
                return [=, &o](PassContext& ctx) {
@@ -202,6 +213,16 @@ int run(const Options& o) {
     return 1;
   }
   Renderer renderer(engine, *device);
+  if (!o.lights.empty()) {
+    const LightType type = o.lights == "directional" ? LightType::Directional
+                           : o.lights == "point"     ? LightType::Point
+                                                     : LightType::Spot;
+    for (uint32_t i = 0; i < engine.scene()->lights().size(); ++i)
+      engine.scene()->editLight(i, [&](Light& l) {
+        l.type = type;
+        if (type == LightType::Spot) l.outerConeAngle = 0.9f;
+      });
+  }
   const Scene& scene = *engine.scene();
   const std::vector<rt::Ray> rays = makeRays(scene, o);
 
@@ -225,8 +246,12 @@ int run(const Options& o) {
   const uint64_t triangles = rts.triangles().size();
   const double bytesPerTriangle = triangles ? double(rts.bytes()) / double(triangles) : 0.0;
 
-  fmt::print("bounce-ray-bench: {} | {} rays, {} ({}), {} runs, device {}\n", sceneName, rays.size(), o.kind,
-             o.anyHit ? "any hit" : "closest hit", o.runs, device->name());
+  fmt::print("bounce-ray-bench: {} | {} rays, {} ({}{}), {} lights{}, {} runs, device {}\n", sceneName,
+             rays.size(), o.kind, o.anyHit ? "any hit" : "closest hit",
+             o.shade == "none"   ? ""
+             : o.shade == "rays" ? ", directLightAt with shadow rays"
+                                 : ", directLightAt with shadow maps",
+             scene.lights().size(), o.lights.empty() ? "" : " (" + o.lights + ")", o.runs, device->name());
   fmt::print(
       "| triangles | BVH build ms (bottom + top) | bytes/triangle | depth | device Mrays/s | Embree Mrays/s "
       "({} threads) | Embree Mrays/s (1 thread) | device / Embree | hit rate | hit/miss disagreements |\n",
@@ -242,6 +267,8 @@ int run(const Options& o) {
                         {"rays", rays.size()},
                         {"kind", o.kind},
                         {"anyHit", o.anyHit},
+                        {"shade", o.shade},
+                        {"lights", o.lights},
                         {"runs", o.runs},
                         {"device", device->name()},
                         {"triangles", triangles},
@@ -276,6 +303,11 @@ int main(int argc, char** argv) {
   app.add_option("--kind", o.kind, "camera: pinhole rays; probe: spherical rays from a grid of probes")
       ->check(CLI::IsMember({"camera", "probe"}));
   app.add_flag("--any-hit", o.anyHit, "Visibility rays (stop at the first hit) instead of closest hit");
+  app.add_option("--shade", o.shade,
+                 "Shade hits with directLightAt: none, rays (shadow rays) or maps (shadow maps)")
+      ->check(CLI::IsMember({"none", "rays", "maps"}));
+  app.add_option("--lights", o.lights, "Turn every light into this type first")
+      ->check(CLI::IsMember({"directional", "point", "spot"}));
   app.add_option("--runs", o.runs, "Timed runs (the median is reported; default 5)")
       ->check(CLI::Range(1u, 1000u));
   app.add_option("--json", o.json, "Also write the results to this JSON file");

@@ -284,6 +284,9 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   VkPhysicalDeviceVulkan13Features s13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   VkPhysicalDeviceVulkan12Features s12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &s13};
   VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &s12};
+  const bool hasRayQuery = has(exts, VK_KHR_RAY_QUERY_EXTENSION_NAME) &&
+                           has(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
+                           has(exts, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
   const bool hasAtomicFloat = has(exts, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
   if (hasAtomicFloat) s13.pNext = &atomicFloat;
   vkGetPhysicalDeviceFeatures2(best, &supported);
@@ -330,6 +333,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   d->features_.shaderImageFloat32Atomics = atomicFloat.shaderImageFloat32Atomics;
   d->features_.shaderImageFloat32AtomicAdd = atomicFloat.shaderImageFloat32AtomicAdd;
   d->features_.samplerAnisotropy = s.samplerAnisotropy;
+  d->features_.rayQuery = hasRayQuery;
 
   std::vector<const char*> deviceExts{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (hasAtomicFloat) deviceExts.push_back(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);

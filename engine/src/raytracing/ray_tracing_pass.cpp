@@ -19,14 +19,29 @@ uint64_t bufferBytes(uint64_t elements, uint64_t elementBytes, uint64_t headerBy
 
 }  // namespace
 
-RayTracingScenePass::RayTracingScenePass()
-    : nodes_(std::string(channels::RayTracingNodes), {64}),
+RayTracingScenePass::RayTracingScenePass(const RendererSettings& settings, const gpu::DeviceFeatures& device)
+    : settings_(settings),
+      device_(device),
+      nodes_(std::string(channels::RayTracingNodes), {64}),
       triangles_(std::string(channels::RayTracingTriangles), {64}),
       attributes_(std::string(channels::RayTracingAttributes), {64}),
       instances_(std::string(channels::RayTracingInstances), {64}),
       materials_(std::string(channels::RayTracingMaterials), {64}) {}
 
 RayTracingScenePass::~RayTracingScenePass() = default;
+
+RayTracingBackend RayTracingScenePass::backend(std::string* why) const {
+  // Only the software traversal exists so far; the setting still says what the user
+  // asked for and what the device could do.
+  const int32_t asked = settings_.rayTracingBackend.get();
+  std::string reason = "software traversal";
+  if (asked == 2)
+    reason += device_.rayQuery
+                  ? " (r.RayTracing.Backend Hardware: the VK_KHR_ray_query backend is not built yet)"
+                  : " (r.RayTracing.Backend Hardware: the device offers no VK_KHR_ray_query)";
+  if (why) *why = reason;
+  return RayTracingBackend::Software;
+}
 
 void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
   // Sizes are upper bounds known before building (the graph declares buffers before
@@ -40,6 +55,15 @@ void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
 
   Blackboard& bb = g.blackboard();
   const Scene& scene = frame.scene;
+  std::string backendText;
+  backend(&backendText);
+  // Said once per change of the setting, not every frame.
+  if (settings_.rayTracingBackend.get() == 2 && warnedBackend_ != 2)
+    log::warn("{}: using the software traversal",
+              device_.rayQuery
+                  ? "r.RayTracing.Backend Hardware: the VK_KHR_ray_query backend is not built yet"
+                  : "r.RayTracing.Backend Hardware: this device offers no VK_KHR_ray_query");
+  warnedBackend_ = settings_.rayTracingBackend.get();
   g.addPass("RayTracingScene", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const BufferHandle nodes = b.write(g.importBuffer(nodes_), Access::TransferDst);
     const BufferHandle triangles = b.write(g.importBuffer(triangles_), Access::TransferDst);
@@ -52,15 +76,15 @@ void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
     bb.setBuffer(channels::RayTracingInstances, instances);
     bb.setBuffer(channels::RayTracingMaterials, materials);
     b.whenUnread("no pass traces rays");
-    b.condition([this, &scene] {
+    b.condition([this, &scene, backendText] {
       const std::string work = scene_.pendingWork(scene);
       const std::array<const void*, 5> now{nodes_.allocation(), triangles_.allocation(),
                                            attributes_.allocation(), instances_.allocation(),
                                            materials_.allocation()};
-      if (!work.empty()) return PassDecision::run("builds " + work);
+      if (!work.empty()) return PassDecision::run("builds " + work + "; " + backendText);
       if (now != uploadedTo_)
-        return PassDecision::run("uploads the acceleration structure (buffers re-created)");
-      return PassDecision::run("up to date, nothing to build");
+        return PassDecision::run("uploads the acceleration structure (buffers re-created); " + backendText);
+      return PassDecision::run("up to date, nothing to build; " + backendText);
     });
     return [=, this, &scene](PassContext& ctx) {
       const std::array<const void*, 5> now{nodes_.allocation(), triangles_.allocation(),

@@ -5,7 +5,9 @@
 // them ("no pass traces rays"): then nothing is built or uploaded.
 
 #include "bounce/frame/frame_context.h"
+#include "bounce/gpu/device.h"
 #include "bounce/graph/render_graph.h"
+#include "bounce/renderer/renderer_settings.h"
 #include "raytracing/ray_tracing_scene.h"
 
 #include <memory>
@@ -14,15 +16,20 @@ namespace bounce {
 
 class RayTracingScenePass {
  public:
-  RayTracingScenePass();
+  RayTracingScenePass(const RendererSettings& settings, const gpu::DeviceFeatures& device);
   ~RayTracingScenePass();
 
   void declare(RenderGraph& graph, const FrameContext& frame);
 
   const rt::RayTracingScene& scene() const { return scene_; }
+  /// The backend r.RayTracing.Backend resolves to on this device, and why.
+  RayTracingBackend backend(std::string* why = nullptr) const;
 
  private:
+  const RendererSettings& settings_;
+  gpu::DeviceFeatures device_;
   rt::RayTracingScene scene_;
+  int32_t warnedBackend_ = -1;  ///< the setting last warned about
   PersistentBuffer nodes_, triangles_, attributes_, instances_, materials_;
   /// The allocations the last upload went to: a re-created buffer needs everything again.
   std::array<const void*, 5> uploadedTo_{};

@@ -28,7 +28,7 @@ Renderer::Renderer(Engine& engine, const gpu::Device& device, RendererOptions op
   scene_ = std::make_unique<gpu::GpuScene>(device);
   executor_ = std::make_unique<gpu::GraphExecutor>(device, *pipelines_);
   pipeline_ = std::make_unique<DeferredPipeline>(engine.rendererSettings(), engine.aovs(), &device);
-  rayTracing_ = std::make_unique<RayTracingScenePass>();
+  rayTracing_ = std::make_unique<RayTracingScenePass>(engine.rendererSettings(), device.features());
 }
 
 Renderer::~Renderer() { vkDeviceWaitIdle(device_.handle()); }

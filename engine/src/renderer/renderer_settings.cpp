@@ -59,6 +59,15 @@ RendererSettings::RendererSettings(CVarRegistry& cvars)
            .max = 1.0e5,
            .outOfRange = RangePolicy::Clamp,
            .postProcess = "AmbientIrradiance",
-           .category = "Renderer|Lighting"})) {}
+           .category = "Renderer|Lighting"})),
+      rayTracingBackend(cvars.add<int32_t>(
+          {.name = "r.RayTracing.Backend",
+           .defaultValue = 0,
+           .help =
+               "How passes trace rays into the scene: Auto (the best the device offers), Software (BVH "
+               "traversal in compute shaders, every device) or Hardware (VK_KHR_ray_query; not built yet: "
+               "falls back to Software with a warning).",
+           .enumNames = {"Auto", "Software", "Hardware"},
+           .category = "Renderer|Ray tracing"})) {}
 
 }  // namespace bounce

@@ -192,8 +192,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       BufferHandle constants = b.read(handles.constants, Access::StorageRead);
       BufferHandle mats = b.read(materialBuffer, Access::StorageRead);
       BufferHandle flags = b.read(lightBuffer, Access::StorageRead);
-      BufferHandle lights = b.read(bb.buffer("scene.lights"), Access::StorageRead);
-      BufferHandle matrices = b.read(bb.buffer("scene.shadowMatrices"), Access::StorageRead);
+      BufferHandle lights = b.read(bb.buffer(channels::SceneLights), Access::StorageRead);
+      BufferHandle matrices = b.read(bb.buffer(channels::ShadowMatrices), Access::StorageRead);
       TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
       TextureHandle fallbackShadows = b.read(noShadows, Access::Sampled);
       b.condition(decide);

@@ -45,6 +45,9 @@ struct DeviceFeatures {
   bool shaderImageFloat32Atomics = false;  ///< VK_EXT_shader_atomic_float
   bool shaderImageFloat32AtomicAdd = false;
   bool samplerAnisotropy = false;
+  /// VK_KHR_ray_query with VK_KHR_acceleration_structure offered (what a hardware
+  /// ray-tracing backend needs; reported, not enabled).
+  bool rayQuery = false;
 };
 
 enum class SamplerKind : uint8_t {

@@ -16,6 +16,10 @@ struct RendererSettings {
   CVarRef<float> bloomThreshold;  ///< r.Bloom.Threshold, post-process "BloomThreshold"
   CVarRef<float>
       ambientIrradiance;  ///< r.Lighting.AmbientIrradiance (W/m²), post-process "AmbientIrradiance"
+  CVarRef<int32_t> rayTracingBackend;  ///< r.RayTracing.Backend: Auto | Software | Hardware
 };
+
+/// How scene ray tracing runs (r.RayTracing.Backend resolved against the device).
+enum class RayTracingBackend : uint8_t { Software, Hardware };
 
 }  // namespace bounce

@@ -35,6 +35,24 @@ vec3 directIrradianceAt(RtSurface s, uint lightCount) {
   return sum;
 }
 
+#ifdef BOUNCE_SHADOWS_GLSL
+// The same with the engine's shadow maps for visibility (include bounce/shadows.glsl
+// after SHADOW_MATRICES(binding) first): what the rasterized lighting pass sees, for
+// comparisons and for devices where tracing is too slow.
+vec3 directIrradianceAtShadowMapped(RtSurface s, uint lightCount, sampler2DArrayShadow maps) {
+  vec3 sum = vec3(0.0);
+  for (uint i = 0u; i < lightCount; ++i) {
+    vec3 L, E;
+    float distanceToLight;
+    lightIncidence(lights[i], s.position, L, E, distanceToLight);
+    float cosTheta = dot(s.normal, L);
+    if (cosTheta <= 0.0 || dot(s.geometricNormal, L) <= 0.0) continue;
+    sum += E * cosTheta * shadowFactor(lights[i], s.position, s.geometricNormal, L, maps);
+  }
+  return sum;
+}
+#endif
+
 // Radiance the surface reflects from direct light, diffuse part: albedo (1 − metallic)
 // / π × irradiance. Add s.emission for what the surface emits itself.
 vec3 directLightAt(RtSurface s, uint lightCount) {
