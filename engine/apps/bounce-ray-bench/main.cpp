@@ -178,8 +178,10 @@ double traceWithEmbree(const rt::EmbreeReference& reference, const std::vector<r
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::thread> pool;
     for (uint32_t t = 0; t < threads; ++t)
+      // Contiguous ranges: interleaved indices would share cache lines between threads.
       pool.emplace_back([&, t] {
-        for (size_t i = t; i < rays.size(); i += threads)
+        const size_t begin = rays.size() * t / threads, end = rays.size() * (t + 1) / threads;
+        for (size_t i = begin; i < end; ++i)
           hits[i] = reference.intersect(glm::vec3(rays[i].origin), glm::vec3(rays[i].direction),
                                         rays[i].origin.w, rays[i].direction.w);
       });
