@@ -33,6 +33,24 @@ TEST(SoakStatistics, RssSlopeIsInKibPerThousandFramesOverTheSecondHalf) {
   EXPECT_LT(s.rssSlopeKiBPerThousand(0), 1000.0);
 }
 
+// The samples are part of the process whose resident set they measure: taking them must
+// not allocate, or the soak sees its own bookkeeping grow (it did: 3 vectors doubling).
+TEST(SoakStatistics, ReservedSamplesAreAddedWithoutAllocating) {
+  SoakSamples s;
+  s.add(0, 1, 2);
+  s.reserve(10'000);
+  EXPECT_EQ(s.frame.size(), 1u) << "reserve() keeps the samples taken";
+  EXPECT_EQ(s.rssBytes.front(), 1.0);
+  const double* frames = s.frame.data();
+  const double* rss = s.rssBytes.data();
+  const double* device = s.deviceBytes.data();
+  for (uint64_t f = 1; f < 10'000; ++f) s.add(f, 100'000'000 + f, f);
+  EXPECT_EQ(s.frame.data(), frames);
+  EXPECT_EQ(s.rssBytes.data(), rss);
+  EXPECT_EQ(s.deviceBytes.data(), device);
+  EXPECT_EQ(s.deviceBytes.back(), 9'999.0);
+}
+
 TEST(SoakStatistics, ResidentSetFollowsTouchedMemory) {
   const std::optional<uint64_t> before = residentSetBytes();
   ASSERT_TRUE(before);

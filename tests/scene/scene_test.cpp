@@ -221,6 +221,29 @@ TEST(Scene, ChangesSinceIsNulloptOnceRecordsWereDropped) {
   EXPECT_EQ(kept->size(), 4000u);
 }
 
+// The log is a ring once full: records stay oldest first across its wrap, and exactly the
+// last 4096 are kept.
+TEST(Scene, ChangeLogKeepsTheLast4096InOrderAcrossItsWrap) {
+  Scene scene;
+  uint32_t m = scene.addMesh(triangleMesh());
+  uint32_t i = scene.addInstance(instanceAt(m, {0, 0, 0}));
+  for (int k = 1; k <= 4096 + 1000; ++k)
+    scene.setInstanceTransform(i, glm::translate(glm::mat4(1.0f), glm::vec3(float(k), 0, 0)));
+  const uint64_t latest = scene.revision();
+  EXPECT_FALSE(scene.changesSince(latest - 4097).has_value());
+  auto all = scene.changesSince(latest - 4096);
+  ASSERT_TRUE(all);
+  ASSERT_EQ(all->size(), 4096u);
+  for (size_t k = 0; k < all->size(); ++k) ASSERT_EQ((*all)[k].revision, latest - 4095 + k) << k;
+  EXPECT_EQ(all->back().kind, SceneChange::Transform);
+  EXPECT_NEAR(all->back().after.min.x, 5096.0f, 1e-2f);
+  EXPECT_NEAR(all->front().after.min.x, 1001.0f, 1e-2f);
+  auto last = scene.changesSince(latest - 1);
+  ASSERT_TRUE(last);
+  ASSERT_EQ(last->size(), 1u);
+  EXPECT_EQ(last->front().revision, latest);
+}
+
 TEST(Scene, EditingAnIndexThatDoesNotExistThrows) {
   Scene scene;
   EXPECT_THROW(scene.setInstanceTransform(0, glm::mat4(1.0f)), std::out_of_range);

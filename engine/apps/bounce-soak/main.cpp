@@ -112,6 +112,7 @@ std::optional<bounce::soak::TechniqueSoak> soak(const Options& o, const std::str
   outputs.aovs = engine.aovs().names();
   device.clearValidationMessages();
   bounce::soak::SoakSamples samples;
+  samples.reserve(o.frames);  // before the first sample: the samples are not what grows
   {
     bounce::Renderer renderer(engine, device);
     const auto start = std::chrono::steady_clock::now();

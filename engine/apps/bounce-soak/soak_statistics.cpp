@@ -37,6 +37,14 @@ double leastSquaresSlope(std::span<const double> x, std::span<const double> y) {
   return sxx > 0.0 ? sxy / sxx : 0.0;  // all x equal: no line, no slope
 }
 
+void SoakSamples::reserve(size_t frames) {
+  for (std::vector<double>* v : {&frame, &rssBytes, &deviceBytes}) {
+    const size_t kept = v->size();
+    v->resize(std::max(frames, kept));  // writes every new page, which reserve() alone would not
+    v->resize(kept);                    // keeps the capacity
+  }
+}
+
 void SoakSamples::add(uint64_t frameIndex, uint64_t rss, uint64_t device) {
   frame.push_back(double(frameIndex));
   rssBytes.push_back(double(rss));

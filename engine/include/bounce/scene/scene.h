@@ -10,7 +10,6 @@
 #include "bounce/scene/post_process_volume.h"
 
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <optional>
 #include <span>
@@ -99,7 +98,10 @@ class Scene {
 
   uint64_t revision_ = 0;
   uint64_t kindRevision_[size_t(SceneChange::Count)] = {};
-  std::deque<SceneChangeRecord> changes_;
+  /// The last few thousand changes: appended until full, then a ring whose oldest record
+  /// is at oldestChange_ (scene.cpp says when its memory is allocated).
+  std::vector<SceneChangeRecord> changes_;
+  size_t oldestChange_ = 0;
   uint64_t droppedUpTo_ = 0;  ///< records with revision <= this were dropped
 };
 
