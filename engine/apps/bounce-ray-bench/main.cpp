@@ -132,11 +132,16 @@ DeviceRun traceOnDevice(Engine& engine, Renderer& renderer, const gpu::Device& d
                BufferHandle in = b.read(rayBuf, Access::StorageRead);
                hits = b.write(b.createBuffer("bench.hits", {hitBytes}), Access::StorageWrite);
                return [=, &o](PassContext& ctx) {
-                 const gpu::Pipeline& p =
-                     ctx.pipelines().compute({"engine/apps/bounce-ray-bench/trace_rays.comp", {}});
+                 const std::string shade = o.shade == "rays" ? "1" : o.shade == "maps" ? "2" : "0";
+                 const gpu::Pipeline& p = ctx.pipelines().compute(
+                     {"engine/apps/bounce-ray-bench/trace_rays.comp", {{"SHADE", shade}}});
                  gpu::Bindings bindings;
                  bindRayTracingScene(bindings, rt).buffer("Rays", in).buffer("Hits", hits);
-                 const uint32_t push[2] = {uint32_t(rays.size()), o.anyHit ? 1u : 0u};
+                 if (o.shade != "none") bindings.buffer("SceneLights", lights.lights);
+                 if (o.shade == "maps")
+                   bindings.buffer("ShadowMatrices", lights.shadowMatrices)
+                       .texture("shadowMaps", lights.shadowMaps, gpu::SamplerKind::ShadowCompare);
+                 const uint32_t push[3] = {uint32_t(rays.size()), o.anyHit ? 1u : 0u, lightCount};
                  ctx.dispatchThreads(p, bindings, {uint32_t(rays.size()), 1, 1}, push, sizeof push);
                };
              });
@@ -168,9 +173,9 @@ DeviceRun traceOnDevice(Engine& engine, Renderer& renderer, const gpu::Device& d
   return run;
 }
 
-/// Embree's rtcIntersect1 (or rtcOccluded1 through intersect's tfar) over the rays on
+/// Embree's rtcIntersect1 (rtcOccluded1 for any-hit rays) over the rays on
 /// `threads` threads; returns the median milliseconds and the hits of the last run.
-double traceWithEmbree(const rt::EmbreeReference& reference, const std::vector<rt::Ray>& rays,
+double traceWithEmbree(const rt::EmbreeReference& reference, const std::vector<rt::Ray>& rays, bool anyHit,
                        uint32_t threads, uint32_t runs, std::vector<rt::ReferenceHit>& hits) {
   hits.assign(rays.size(), {});
   std::vector<double> ms;
@@ -182,8 +187,12 @@ double traceWithEmbree(const rt::EmbreeReference& reference, const std::vector<r
       pool.emplace_back([&, t] {
         const size_t begin = rays.size() * t / threads, end = rays.size() * (t + 1) / threads;
         for (size_t i = begin; i < end; ++i)
-          hits[i] = reference.intersect(glm::vec3(rays[i].origin), glm::vec3(rays[i].direction),
-                                        rays[i].origin.w, rays[i].direction.w);
+          if (anyHit)
+            hits[i].hit = reference.occluded(glm::vec3(rays[i].origin), glm::vec3(rays[i].direction),
+                                             rays[i].origin.w, rays[i].direction.w);
+          else
+            hits[i] = reference.intersect(glm::vec3(rays[i].origin), glm::vec3(rays[i].direction),
+                                          rays[i].origin.w, rays[i].direction.w);
       });
     for (std::thread& th : pool) th.join();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
@@ -235,8 +244,8 @@ int run(const Options& o) {
   rt::EmbreeReference reference(scene);
   std::vector<rt::ReferenceHit> ref;
   const uint32_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const double embreeOneMs = traceWithEmbree(reference, rays, 1, o.runs, ref);
-  const double embreeAllMs = traceWithEmbree(reference, rays, cores, o.runs, ref);
+  const double embreeOneMs = traceWithEmbree(reference, rays, o.anyHit, 1, o.runs, ref);
+  const double embreeAllMs = traceWithEmbree(reference, rays, o.anyHit, cores, o.runs, ref);
   uint64_t disagreements = 0, hits = 0;
   for (size_t i = 0; i < rays.size(); ++i) {
     const bool h = dev.hits[i].flags & 1u;

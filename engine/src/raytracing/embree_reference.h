@@ -63,6 +63,18 @@ class EmbreeReference {
   EmbreeReference(const EmbreeReference&) = delete;
   EmbreeReference& operator=(const EmbreeReference&) = delete;
 
+  /// rtcOccluded1: whether anything lies between tMin and tMax.
+  bool occluded(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray{};
+    ray.org_x = o.x, ray.org_y = o.y, ray.org_z = o.z, ray.tnear = tMin;
+    ray.dir_x = d.x, ray.dir_y = d.y, ray.dir_z = d.z, ray.tfar = tMax;
+    ray.mask = ~0u;
+    rtcOccluded1(scene_, &context, &ray);
+    return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+  }
+
   ReferenceHit intersect(const glm::vec3& o, const glm::vec3& d, float tMin, float tMax) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);

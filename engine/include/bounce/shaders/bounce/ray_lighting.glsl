@@ -3,11 +3,17 @@
 // (bounce/lights.glsl); `lightCount` is the scene's light count (the lights buffer
 // holds at least one entry even when there are none).
 //
-// Visibility is a shadow ray for every light type, not the shadow maps: measured with
-// bounce-ray-bench (--kind direct), and exact where maps are not — a shadow map's
-// normal offset and texel footprint leak light through walls a few texels thick, the
-// very case probes behind a sunlit wall must get right; its resolution follows the
-// scene's bounds, so small rooms in a large scene get a few texels.
+// Visibility is a shadow ray for every light type, not the shadow maps. Measured with
+// `bounce-ray-bench --kind probe --shade none|rays|maps --lights TYPE` on the Cornell box
+// (lavapipe, 2 cores, 262,144 rays, 88% hit): the extra cost per shaded hit was
+//   point        shadow ray 0.26 µs   shadow map (cube face, 3×3 PCF) 0.17 µs
+//   directional  shadow ray 0.20 µs   shadow map 0.16 µs
+//   spot         shadow ray 0.13 µs   shadow map 0.17 µs
+// — at most 1.5× the maps, and exact where maps are not: a map's normal offset and texel
+// footprint leak light through walls a few texels thick (the very case of probes behind
+// a sunlit wall), and its resolution follows the whole scene's bounds, so a small room in
+// a large scene gets a few texels. directIrradianceAtShadowMapped below is the map
+// version, for comparisons with the rasterized lighting.
 #ifndef BOUNCE_RAY_LIGHTING_GLSL
 #define BOUNCE_RAY_LIGHTING_GLSL
 
