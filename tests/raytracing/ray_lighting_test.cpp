@@ -80,5 +80,31 @@ TEST_F(RayLighting, ShadowedPointsGetNoDirectLight) {
   EXPECT_GT(lit, 0u);
 }
 
+TEST_F(RayLighting, ShadowMapsAreReadableFromFrameBeginAndAgreeAwayFromShadowEdges) {
+  // The lights' shadow maps exist before the first extension point: a FrameBegin pass
+  // shades hits with them. Away from the penumbra (3×3 PCF) they agree with the rays.
+  start("content/tests/shadowed_plane_point.gltf");
+  const std::vector<TestRay> rays = raysOntoPlane(0.2f);
+  TraceResult withRays = trace(rays, TraceMode::DirectLight);
+  TraceResult withMaps = trace(rays, TraceMode::DirectLightShadowMapped);
+  EXPECT_EQ(passReport(withMaps.frame, "ShadowMaps").rfind("executed", 0), 0u)
+      << passReport(withMaps.frame, "ShadowMaps");
+  size_t compared = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    // Skip the points whose neighbours 0.25 m away disagree about the shadow: the edge.
+    const float lit = withRays.hits[i].value.g;
+    bool nearEdge = false;
+    for (int d : {-1, 1, -13, 13}) {
+      const long j = long(i) + d;
+      if (j >= 0 && j < long(rays.size()) && (withRays.hits[size_t(j)].value.g == 0.0f) != (lit == 0.0f))
+        nearEdge = true;
+    }
+    if (nearEdge) continue;
+    ++compared;
+    EXPECT_NEAR(withMaps.hits[i].value.g, lit, 0.02f * lit + 1e-6f) << "ray " << i;
+  }
+  EXPECT_GT(compared, rays.size() / 2);
+}
+
 }  // namespace
 }  // namespace bounce::test

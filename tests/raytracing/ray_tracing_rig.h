@@ -27,7 +27,13 @@ struct TestHit {
 };
 static_assert(sizeof(TestHit) == 32);
 
-enum class TraceMode : uint32_t { ClosestHit = 0, AnyHit = 1, DirectLight = 2, ShadingNormal = 3 };
+enum class TraceMode : uint32_t {
+  ClosestHit = 0,
+  AnyHit = 1,
+  DirectLight = 2,
+  ShadingNormal = 3,
+  DirectLightShadowMapped = 4
+};
 
 struct TraceResult {
   std::vector<TestHit> hits;
@@ -74,6 +80,8 @@ class RayTracingRig : public RenderFixture {
                    gpu::Bindings bindings;
                    bindRayTracingScene(bindings, rt)
                        .buffer("SceneLights", lights.lights)
+                       .buffer("ShadowMatrices", lights.shadowMatrices)
+                       .texture("shadowMaps", lights.shadowMaps, gpu::SamplerKind::ShadowCompare)
                        .buffer("Rays", in)
                        .buffer("Hits", hits)
                        .buffer("RtDebugCounters", count);

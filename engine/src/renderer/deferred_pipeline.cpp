@@ -116,19 +116,26 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
   const uint32_t layers = lights->shadowLayers();
   const float slopeBias = settings_.shadowDepthBias.get();
   g.addPass("ShadowMaps", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
+    // Without shadow-casting lights the maps are one cleared 1×1 layer (depth 1: lit),
+    // so a reader always binds a depth array, whatever the scene.
     TextureDesc desc{.type = TextureType::Tex2DArray,
                      .format = VK_FORMAT_D32_SFLOAT,
-                     .width = mapSize,
-                     .height = mapSize,
+                     .width = layers ? mapSize : 1u,
+                     .height = layers ? mapSize : 1u,
                      .layers = std::max(1u, layers)};
     TextureHandle maps =
         b.write(b.createTexture(std::string(channels::ShadowMaps), desc), Access::DepthAttachment);
     bb.setTexture(channels::ShadowMaps, maps);
     b.condition([layers] {
-      return layers ? PassDecision::run(fmt::format("{} shadow-map layers", layers))
-                    : PassDecision::skip("no shadow-casting lights");
+      return PassDecision::run(layers ? fmt::format("{} shadow-map layers", layers)
+                                      : std::string("no shadow-casting lights: one cleared 1×1 layer"));
     });
     return [=](PassContext& ctx) {
+      if (layers == 0) {
+        ctx.beginRendering({.depth = DepthTarget{maps, 1.0f}, .layer = 0u});
+        ctx.endRendering();
+        return;
+      }
       gpu::GraphicsPipelineDesc pd;
       pd.vertex = shader("shadow_depth.vert");
       pd.depthFormat = VK_FORMAT_D32_SFLOAT;

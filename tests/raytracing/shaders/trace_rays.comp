@@ -1,12 +1,16 @@
 #version 460
 // Test kernel: one ray per invocation through the engine's GLSL ray-tracing library.
 // mode 0: closest hit; 1: any hit; 2: closest hit, then directLightAt at the surface;
-// 3: closest hit, then the surface's shading normal.
+// 3: closest hit, then the surface's shading normal; 4: closest hit, then the direct
+// light with the engine's shadow maps for visibility.
 #define RAY_TRACING_BINDING 0
 #define RAY_TRACING_DEBUG_COUNTERS_BINDING 9
 #include "bounce/ray_tracing.glsl"
 #include "bounce/lights.glsl"
 LIGHTS(5)
+SHADOW_MATRICES(8)
+layout(binding = 10) uniform sampler2DArrayShadow shadowMaps;
+#include "bounce/shadows.glsl"
 #include "bounce/ray_lighting.glsl"
 
 layout(local_size_x = 64) in;
@@ -53,6 +57,10 @@ void main() {
       out_.value = vec4(h.barycentrics, 0.0, 0.0);
       if (mode == 2u) out_.value = vec4(directLightAt(surfaceAt(h), lightCount), 0.0);
       if (mode == 3u) out_.value = vec4(surfaceAt(h).normal, 0.0);
+      if (mode == 4u) {
+        RtSurface s = surfaceAt(h);
+        out_.value = vec4(s.baseColor * INV_PI * directIrradianceAtShadowMapped(s, lightCount, shadowMaps), 0.0);
+      }
     }
   }
   hits[i] = out_;

@@ -19,23 +19,28 @@
 
 #include "bounce/lights.glsl"
 
+// Light `light` as it arrives at `s` before visibility: direction L, the irradiance E it
+// delivers head-on, the cosine at the shading normal and the distance. False when it
+// cannot light the side `s` faces: the geometric normal decides that, since an
+// interpolated normal may lean towards a light behind the surface.
+bool lightArriving(RtSurface s, Light light, out vec3 L, out vec3 E, out float cosTheta, out float distanceToLight) {
+  lightIncidence(light, s.position, L, E, distanceToLight);
+  cosTheta = dot(s.normal, L);
+  return cosTheta > 0.0 && dot(s.geometricNormal, L) > 0.0 && any(greaterThan(E, vec3(0.0)));
+}
+
 // Irradiance (W/m²) arriving at `s` from the punctual lights, on the side its normal
 // faces, each light's visibility tested with a shadow ray.
 vec3 directIrradianceAt(RtSurface s, uint lightCount) {
   vec3 sum = vec3(0.0);
   for (uint i = 0u; i < lightCount; ++i) {
     vec3 L, E;
-    float distanceToLight;
-    lightIncidence(lights[i], s.position, L, E, distanceToLight);
-    float cosTheta = dot(s.normal, L);
-    // The geometric normal decides which side is lit: an interpolated normal may lean
-    // towards a light behind the surface.
-    if (cosTheta <= 0.0 || dot(s.geometricNormal, L) <= 0.0 || all(equal(E, vec3(0.0)))) continue;
-    vec3 origin = offsetRayOrigin(s, L);
-    // Stop short of a point light by the same offset: a light on a surface is not
+    float cosTheta, distanceToLight;
+    if (!lightArriving(s, lights[i], L, E, cosTheta, distanceToLight)) continue;
+    // Stop short of a point light by the surface's offset: a light on a surface is not
     // shadowed by that surface.
     float tMax = distanceToLight >= 1e30 ? 1e30 : distanceToLight - s.rayOffset;
-    if (tMax > 0.0 && traceAnyHit(origin, L, 0.0, tMax)) continue;
+    if (tMax > 0.0 && traceAnyHit(offsetRayOrigin(s, L), L, 0.0, tMax)) continue;
     sum += E * cosTheta;
   }
   return sum;
@@ -49,10 +54,8 @@ vec3 directIrradianceAtShadowMapped(RtSurface s, uint lightCount, sampler2DArray
   vec3 sum = vec3(0.0);
   for (uint i = 0u; i < lightCount; ++i) {
     vec3 L, E;
-    float distanceToLight;
-    lightIncidence(lights[i], s.position, L, E, distanceToLight);
-    float cosTheta = dot(s.normal, L);
-    if (cosTheta <= 0.0 || dot(s.geometricNormal, L) <= 0.0) continue;
+    float cosTheta, distanceToLight;
+    if (!lightArriving(s, lights[i], L, E, cosTheta, distanceToLight)) continue;
     sum += E * cosTheta * shadowFactor(lights[i], s.position, s.geometricNormal, L, maps);
   }
   return sum;
