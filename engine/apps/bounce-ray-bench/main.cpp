@@ -14,7 +14,9 @@
 //
 // lavapipe runs on the same cores as Embree, so Embree's rate on all of them is the
 // physical reference ("ratio"); Embree on one thread is printed too. Exit status: 0, 1
-// no usable Vulkan device, 2 bad arguments or input.
+// no usable Vulkan device, 2 bad arguments or input, 3 Vulkan validation errors
+// (--validation), 4 the device and Embree disagree on hit or miss for more than 1 ray in
+// 10,000 (rays grazing a silhouette may tie; the tests in tests/raytracing count those).
 
 #include "bounce/core/log.h"
 #include "bounce/engine.h"
@@ -53,6 +55,7 @@ struct Options {
   uint32_t runs = 5;
   std::string json;
   std::string device;
+  bool validation = false;
 };
 
 struct BenchHit {
@@ -218,7 +221,8 @@ int run(const Options& o) {
     }
   }
   std::string error;
-  std::unique_ptr<gpu::Device> device = gpu::Device::create({.preferredDevice = o.device}, &error);
+  std::unique_ptr<gpu::Device> device =
+      gpu::Device::create({.preferredDevice = o.device, .validation = o.validation}, &error);
   if (!device) {
     app::printError("bounce-ray-bench", error);
     return 1;
@@ -298,6 +302,16 @@ int run(const Options& o) {
                         {"hitMissDisagreements", disagreements}};
     std::ofstream(o.json) << j.dump(2) << "\n";
   }
+  if (device->validationErrorCount() > 0) {
+    app::printError("bounce-ray-bench",
+                    fmt::format("{} Vulkan validation errors", device->validationErrorCount()));
+    return 3;
+  }
+  if (disagreements * 10000 > rays.size()) {
+    app::printError("bounce-ray-bench", fmt::format("the device and Embree disagree on {} of {} rays",
+                                                    disagreements, rays.size()));
+    return 4;
+  }
   return 0;
 }
 
@@ -323,6 +337,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1u, 1000u));
   app.add_option("--json", o.json, "Also write the results to this JSON file");
   app.add_option("--device", o.device, "Vulkan device name (substring)");
+  app.add_flag("--validation", o.validation, "Vulkan validation layer on; any error exits with status 3");
   CLI11_PARSE(app, argc, argv);
   try {
     return run(o);
