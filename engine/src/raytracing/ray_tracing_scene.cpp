@@ -62,6 +62,11 @@ std::string listed(const std::vector<std::string>& items) {
 
 }  // namespace
 
+const BvhBuilder& RayTracingScene::builder() const {
+  if (!builder_) builder_ = std::make_unique<BvhBuilder>();
+  return *builder_;
+}
+
 Capacity RayTracingScene::capacity(const Scene& scene) {
   Capacity c;
   for (const Mesh& mesh : scene.meshes()) {
@@ -140,7 +145,7 @@ RayTracingScene::BottomLevel RayTracingScene::buildBottomLevel(const Scene& scen
     }
   }
   BottomLevel out;
-  FlatBvh bvh = builder_.build(boxes, kBottomLeafSize, kBottomMaxDepth);
+  FlatBvh bvh = builder().build(boxes, kBottomLeafSize, kBottomMaxDepth);
   out.nodes = std::move(bvh.nodes);
   out.depth = bvh.depth;
   out.triangles.reserve(bvh.order.size());
@@ -264,7 +269,7 @@ void RayTracingScene::buildTopLevel(const Scene& scene) {
     boxes.push_back(bottom_[inst.mesh].bounds.transformed(inst.world));
   }
   // One instance per leaf: entering a leaf enters exactly one instance.
-  FlatBvh top = builder_.build(boxes, 1, kTopMaxDepth);
+  FlatBvh top = builder().build(boxes, 1, kTopMaxDepth);
   std::vector<RtInstance> ordered;
   ordered.reserve(top.order.size());
   for (uint32_t id : top.order) ordered.push_back(instances[id]);

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -85,7 +86,9 @@ class RayTracingScene {
   void buildMaterials(const Scene& scene);
   glm::vec4 textureMean(const Scene& scene, const TextureRef& ref, bool srgb);
 
-  BvhBuilder builder_;
+  /// Created on the first build: a renderer whose passes never trace starts no Embree device.
+  const BvhBuilder& builder() const;
+  mutable std::unique_ptr<BvhBuilder> builder_;
   const Scene* scene_ = nullptr;
   std::vector<BottomLevel> bottom_;  // per mesh
   uint64_t seenTransforms_ = ~0ull, seenGeometry_ = ~0ull, seenMaterials_ = ~0ull, seenRevision_ = 0;
