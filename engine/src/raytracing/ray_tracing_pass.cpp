@@ -110,13 +110,20 @@ void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
       if (changed.topLevel) upload(instances, scene_.instanceBuffer());
       if (changed.materials) upload(materials, scene_.materials());
       const uint64_t triangleCount = scene_.triangles().size();
-      log::info(
+      // Building bottom levels is news (a scene loaded, a mesh edited); a top level rebuilt
+      // for a moving object is not, and would repeat every frame.
+      const bool news = s.bottomLevelsBuilt > 0;
+      const std::string text = fmt::format(
           "ray tracing: {} bottom levels built in {:.1f} ms, top level ({} instances) {}; {:.2f} MiB, {:.0f} "
           "B per triangle",
           s.bottomLevelsBuilt, s.bottomLevelMs, scene_.counts().instances,
           s.topLevelBuilt ? fmt::format("in {:.2f} ms", s.topLevelMs) : std::string("kept"),
           double(scene_.bytes()) / (1024.0 * 1024.0),
           triangleCount ? double(scene_.bytes()) / double(triangleCount) : 0.0);
+      if (news)
+        log::info("{}", text);
+      else
+        log::debug("{}", text);
     };
   });
 }
