@@ -30,28 +30,41 @@ RayTracingScenePass::RayTracingScenePass(const RendererSettings& settings, const
 
 RayTracingScenePass::~RayTracingScenePass() = default;
 
+namespace {
+// Why r.RayTracing.Backend Hardware cannot be honoured on this device (the only backend
+// so far is the software traversal).
+std::string hardwareRefusal(bool deviceHasRayQuery) {
+  return deviceHasRayQuery ? "r.RayTracing.Backend Hardware: the VK_KHR_ray_query backend is not built yet"
+                           : "r.RayTracing.Backend Hardware: this device offers no VK_KHR_ray_query";
+}
+}  // namespace
+
 RayTracingBackend RayTracingScenePass::backend(std::string* why) const {
-  // Only the software traversal exists so far; the setting still says what the user
-  // asked for and what the device could do.
-  const int32_t asked = settings_.rayTracingBackend.get();
-  std::string reason = "software traversal";
-  if (asked == 2)
-    reason += device_.rayQuery
-                  ? " (r.RayTracing.Backend Hardware: the VK_KHR_ray_query backend is not built yet)"
-                  : " (r.RayTracing.Backend Hardware: the device offers no VK_KHR_ray_query)";
-  if (why) *why = reason;
+  if (why) {
+    *why = "software traversal";
+    if (settings_.rayTracingBackend.get() == 2) *why += " (" + hardwareRefusal(device_.rayQuery) + ")";
+  }
   return RayTracingBackend::Software;
+}
+
+std::array<const void*, 5> RayTracingScenePass::allocations() const {
+  return {nodes_.allocation(), triangles_.allocation(), attributes_.allocation(), instances_.allocation(),
+          materials_.allocation()};
 }
 
 void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
   // Sizes are upper bounds known before building (the graph declares buffers before
-  // any pass records), so they change only when the scene's topology does.
-  const rt::Capacity cap = rt::RayTracingScene::capacity(frame.scene);
-  nodes_.setDesc({bufferBytes(cap.nodes, sizeof(rt::RtNode))});
-  triangles_.setDesc({bufferBytes(cap.triangles, sizeof(rt::RtTriangle))});
-  attributes_.setDesc({bufferBytes(cap.triangles, sizeof(rt::RtTriangleAttributes))});
-  instances_.setDesc({bufferBytes(cap.instances, sizeof(rt::RtInstance), sizeof(rt::RtCounts))});
-  materials_.setDesc({bufferBytes(cap.materials, sizeof(rt::RtMaterial))});
+  // any pass records), so they change only when the scene's geometry does.
+  if (&frame.scene != capacityScene_ || frame.scene.revision(SceneChange::Geometry) != capacityRevision_) {
+    const rt::Capacity cap = rt::RayTracingScene::capacity(frame.scene);
+    nodes_.setDesc({bufferBytes(cap.nodes, sizeof(rt::RtNode))});
+    triangles_.setDesc({bufferBytes(cap.triangles, sizeof(rt::RtTriangle))});
+    attributes_.setDesc({bufferBytes(cap.triangles, sizeof(rt::RtTriangleAttributes))});
+    instances_.setDesc({bufferBytes(cap.instances, sizeof(rt::RtInstance), sizeof(rt::RtCounts))});
+    materials_.setDesc({bufferBytes(cap.materials, sizeof(rt::RtMaterial))});
+    capacityScene_ = &frame.scene;
+    capacityRevision_ = frame.scene.revision(SceneChange::Geometry);
+  }
 
   Blackboard& bb = g.blackboard();
   const Scene& scene = frame.scene;
@@ -59,10 +72,7 @@ void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
   backend(&backendText);
   // Said once per change of the setting, not every frame.
   if (settings_.rayTracingBackend.get() == 2 && warnedBackend_ != 2)
-    log::warn("{}: using the software traversal",
-              device_.rayQuery
-                  ? "r.RayTracing.Backend Hardware: the VK_KHR_ray_query backend is not built yet"
-                  : "r.RayTracing.Backend Hardware: this device offers no VK_KHR_ray_query");
+    log::warn("{}: using the software traversal", hardwareRefusal(device_.rayQuery));
   warnedBackend_ = settings_.rayTracingBackend.get();
   g.addPass("RayTracingScene", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const BufferHandle nodes = b.write(g.importBuffer(nodes_), Access::TransferDst);
@@ -78,18 +88,14 @@ void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
     b.whenUnread("no pass traces rays");
     b.condition([this, &scene, backendText] {
       const std::string work = scene_.pendingWork(scene);
-      const std::array<const void*, 5> now{nodes_.allocation(), triangles_.allocation(),
-                                           attributes_.allocation(), instances_.allocation(),
-                                           materials_.allocation()};
+      const std::array<const void*, 5> now = allocations();
       if (!work.empty()) return PassDecision::run("builds " + work + "; " + backendText);
       if (now != uploadedTo_)
         return PassDecision::run("uploads the acceleration structure (buffers re-created); " + backendText);
       return PassDecision::run("up to date, nothing to build; " + backendText);
     });
     return [=, this, &scene](PassContext& ctx) {
-      const std::array<const void*, 5> now{nodes_.allocation(), triangles_.allocation(),
-                                           attributes_.allocation(), instances_.allocation(),
-                                           materials_.allocation()};
+      const std::array<const void*, 5> now = allocations();
       rt::RayTracingScene::Changed changed = scene_.update(scene);
       if (now != uploadedTo_) changed = {true, true, true};
       uploadedTo_ = now;

@@ -31,8 +31,12 @@ class RayTracingScenePass {
   rt::RayTracingScene scene_;
   int32_t warnedBackend_ = -1;  ///< the setting last warned about
   PersistentBuffer nodes_, triangles_, attributes_, instances_, materials_;
-  /// The allocations the last upload went to: a re-created buffer needs everything again.
+  /// The buffers' allocations now; the last upload's: a re-created buffer needs everything again.
+  std::array<const void*, 5> allocations() const;
   std::array<const void*, 5> uploadedTo_{};
+  /// Capacity of the scene at the geometry revision it was computed for.
+  const Scene* capacityScene_ = nullptr;
+  uint64_t capacityRevision_ = ~0ull;
 };
 
 }  // namespace bounce

@@ -38,7 +38,7 @@ class RayTracingScene {
   /// holds at most their sum + 1 = RT_STACK_SIZE (64) entries, so it cannot overflow.
   static constexpr uint32_t kBottomMaxDepth = 40;
   static constexpr uint32_t kTopMaxDepth = 23;
-  static constexpr uint32_t kBottomLeafSize = 4;  ///< leaf size 1/4/8 traverse within noise (ddgi.md §6.3)
+  static constexpr uint32_t kBottomLeafSize = 4;  ///< leaf sizes 1/4/8 traversed within noise when measured
 
   /// What update() would rebuild now, in words for the frame report ("first build",
   /// "mesh 2 'Box' edited", "instance 4 moved"); empty when everything is up to date.
