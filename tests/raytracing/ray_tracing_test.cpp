@@ -159,6 +159,16 @@ TEST_F(RayTracing, AskingForHardwareRayQueriesFallsBackToTheSoftwareTraversal) {
   TraceResult r = trace(rays, TraceMode::ClosestHit);
   const std::string report = passReport(r.frame, "RayTracingScene");
   EXPECT_NE(report.find("software traversal (r.RayTracing.Backend Hardware:"), std::string::npos) << report;
+  // What a plugin asks at record time: the same answer.
+  std::string why;
+  EXPECT_EQ(activeRayTracingBackend(device->features(), engine->cvars(), &why), RayTracingBackend::Software);
+  EXPECT_NE(report.find(why), std::string::npos) << why;
+  EXPECT_NE(why.find(device->features().rayQuery ? "not built yet" : "offers no VK_KHR_ray_query"),
+            std::string::npos)
+      << why;
+  engine->console().execute("r.RayTracing.Backend Software");
+  EXPECT_EQ(activeRayTracingBackend(device->features(), engine->cvars(), &why), RayTracingBackend::Software);
+  EXPECT_EQ(why, "software traversal");
   const EmbreeReference reference(*engine->scene());
   EXPECT_EQ(compare(rays, r.hits, reference).hitMissDisagreements, 0u);
 }

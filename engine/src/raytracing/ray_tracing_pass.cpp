@@ -3,6 +3,7 @@
 #include "bounce/core/log.h"
 #include "bounce/gpu/pass_context.h"
 #include "bounce/graph/channels.h"
+#include "bounce/raytracing/ray_tracing.h"
 
 #include <fmt/format.h>
 
@@ -30,23 +31,6 @@ RayTracingScenePass::RayTracingScenePass(const RendererSettings& settings, const
 
 RayTracingScenePass::~RayTracingScenePass() = default;
 
-namespace {
-// Why r.RayTracing.Backend Hardware cannot be honoured on this device (the only backend
-// so far is the software traversal).
-std::string hardwareRefusal(bool deviceHasRayQuery) {
-  return deviceHasRayQuery ? "r.RayTracing.Backend Hardware: the VK_KHR_ray_query backend is not built yet"
-                           : "r.RayTracing.Backend Hardware: this device offers no VK_KHR_ray_query";
-}
-}  // namespace
-
-RayTracingBackend RayTracingScenePass::backend(std::string* why) const {
-  if (why) {
-    *why = "software traversal";
-    if (settings_.rayTracingBackend.get() == 2) *why += " (" + hardwareRefusal(device_.rayQuery) + ")";
-  }
-  return RayTracingBackend::Software;
-}
-
 std::array<const void*, 5> RayTracingScenePass::allocations() const {
   return {nodes_.allocation(), triangles_.allocation(), attributes_.allocation(), instances_.allocation(),
           materials_.allocation()};
@@ -69,10 +53,10 @@ void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
   Blackboard& bb = g.blackboard();
   const Scene& scene = frame.scene;
   std::string backendText;
-  backend(&backendText);
+  activeRayTracingBackend(device_, frame.cvars, &backendText);
   // Said once per change of the setting, not every frame.
   if (settings_.rayTracingBackend.get() == 2 && warnedBackend_ != 2)
-    log::warn("{}: using the software traversal", hardwareRefusal(device_.rayQuery));
+    log::warn("ray tracing: {}", backendText);
   warnedBackend_ = settings_.rayTracingBackend.get();
   g.addPass("RayTracingScene", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const BufferHandle nodes = b.write(g.importBuffer(nodes_), Access::TransferDst);

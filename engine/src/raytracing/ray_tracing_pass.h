@@ -22,8 +22,6 @@ class RayTracingScenePass {
   void declare(RenderGraph& graph, const FrameContext& frame);
 
   const rt::RayTracingScene& scene() const { return scene_; }
-  /// The backend r.RayTracing.Backend resolves to on this device, and why.
-  RayTracingBackend backend(std::string* why = nullptr) const;
 
  private:
   const RendererSettings& settings_;

@@ -35,4 +35,24 @@ SceneLightHandles readSceneLights(PassBuilder& b, const Blackboard& bb) {
   return h;
 }
 
+namespace {
+// Why r.RayTracing.Backend Hardware cannot be honoured on this device (the only backend
+// so far is the software traversal).
+std::string hardwareRefusal(bool deviceHasRayQuery) {
+  return deviceHasRayQuery ? "r.RayTracing.Backend Hardware: the VK_KHR_ray_query backend is not built yet"
+                           : "r.RayTracing.Backend Hardware: this device offers no VK_KHR_ray_query";
+}
+}  // namespace
+
+RayTracingBackend activeRayTracingBackend(const gpu::DeviceFeatures& features, const CVarRegistry& cvars,
+                                          std::string* why) {
+  const CVar* setting = cvars.find("r.RayTracing.Backend");
+  const bool hardwareAsked = setting && setting->getInt() == 2;
+  if (why) {
+    *why = "software traversal";
+    if (hardwareAsked) *why += " (" + hardwareRefusal(features.rayQuery) + ")";
+  }
+  return RayTracingBackend::Software;
+}
+
 }  // namespace bounce

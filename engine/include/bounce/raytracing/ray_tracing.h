@@ -14,8 +14,13 @@
 //     };
 //   });
 
+#include "bounce/config/cvar_registry.h"
 #include "bounce/gpu/bindings.h"
+#include "bounce/gpu/device.h"
 #include "bounce/graph/render_graph.h"
+#include "bounce/renderer/renderer_settings.h"
+
+#include <string>
 
 #include <glm/glm.hpp>
 
@@ -34,6 +39,14 @@ RayTracingSceneHandles readRayTracingScene(PassBuilder& builder, const Blackboar
 
 /// Binds the five buffers under the block names bounce/ray_tracing.glsl declares.
 gpu::Bindings& bindRayTracingScene(gpu::Bindings& bindings, const RayTracingSceneHandles& handles);
+
+/// The traversal bounce/ray_tracing.glsl runs on a device with `features` under the
+/// current r.RayTracing.Backend, and in `why` (optional) a line for reports, e.g.
+/// "software traversal (r.RayTracing.Backend Hardware: this device offers no
+/// VK_KHR_ray_query)". A pass asks it at record time with ctx.device().features() and
+/// ctx.frame().cvars; its shaders need no change either way.
+RayTracingBackend activeRayTracingBackend(const gpu::DeviceFeatures& features, const CVarRegistry& cvars,
+                                          std::string* why = nullptr);
 
 /// The punctual lights and their shadow maps, as the engine's lighting uses them.
 struct SceneLightHandles {

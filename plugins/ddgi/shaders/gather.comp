@@ -1,0 +1,36 @@
+#version 460
+// DDGI.Gather (note §4.8, pass P6): the indirect irradiance E at every G-buffer pixel,
+// from the probes, published as the IndirectDiffuse channel (the composite adds
+// albedo/π × E).
+#define DDGI_VOLUME_BINDING 0
+#include "ddgi/irradiance.glsl"
+#include "bounce/gbuffer.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 4) uniform sampler2D gDepth;
+layout(binding = 5) uniform sampler2D gNormalRoughness;
+layout(binding = 6, rgba16f) uniform writeonly image2D outIrradiance;
+
+layout(push_constant) uniform Push {
+  mat4 inverseViewProjection;
+  vec4 cameraPosition;
+  uvec4 size;  // xy: output size
+};
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (p.x >= int(size.x) || p.y >= int(size.y)) return;
+  float depth = texelFetch(gDepth, p, 0).r;
+  if (isBackground(depth)) {
+    imageStore(outIrradiance, p, vec4(0.0));
+    return;
+  }
+  vec2 uv = (vec2(p) + 0.5) / vec2(size.xy);
+  vec3 P = worldPositionFromDepth(uv, depth, inverseViewProjection);
+  vec3 N = safeNormalize(texelFetch(gNormalRoughness, p, 0).xyz, vec3(0.0, 1.0, 0.0));
+  vec3 V = safeNormalize(P - cameraPosition.xyz, -N);
+  vec3 E = ddgiIrradiance(P, ddgiSurfaceBias(N, V), N) * ddgiVolumeWeight(P) * ddgiMisc.z;
+  // 65504: the largest RGBA16F value; NaN from bad data becomes 0, never an output.
+  E = any(isnan(E)) ? vec3(0.0) : min(E, vec3(65504.0));
+  imageStore(outIrradiance, p, vec4(E, 1.0));
+}

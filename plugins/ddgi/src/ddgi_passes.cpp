@@ -1,0 +1,248 @@
+#include "ddgi_passes.h"
+
+#include <bounce/gpu/pass_context.h>
+#include <bounce/graph/channels.h>
+#include <bounce/raytracing/ray_tracing.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+#include <memory>
+
+namespace bounce::ddgi {
+
+namespace {
+
+constexpr const char* kShaders = "plugins/ddgi/shaders/";
+
+gpu::ShaderSource shader(const char* file, std::vector<std::pair<std::string, std::string>> defines = {}) {
+  return {std::string(kShaders) + file, std::move(defines)};
+}
+
+// Every pass of the update shares these conditions, so the report says the same thing
+// for each and a frame with nothing to do culls them all.
+void addConditions(PassBuilder& b, const VolumePlan& plan) {
+  const bool lit = plan.lit, update = plan.update;
+  b.condition([lit, reason = plan.litReason] {
+    return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
+  });
+  b.condition([update, reason = plan.updateReason] {
+    return update ? PassDecision::run(reason) : PassDecision::skip(reason);
+  });
+}
+
+}  // namespace
+
+VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const ProbeTextures& textures,
+                            const ProbeHandles& imported) {
+  Blackboard& bb = graph.blackboard();
+  VolumeFrame out;
+  out.probes = imported;
+  const bool lit = plan.lit;
+
+  // The volume's constants and this update's ray directions, and the light mask.
+  BufferHandle lightMask;
+  graph.addPass("DDGI.Constants", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const uint64_t directionBytes = plan.directions.size() * sizeof(glm::vec4);
+    out.constants = b.write(
+        b.createBuffer("DDGI.Volume", {sizeof(VolumeConstants) + std::max<uint64_t>(directionBytes, 16)}),
+        Access::TransferDst);
+    lightMask = b.write(b.createBuffer("DDGI.LightMask", {plan.lightMask.size() * sizeof(uint32_t)}),
+                        Access::TransferDst);
+    b.condition([lit, reason = plan.litReason] {
+      return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
+    });
+    auto data = std::make_shared<std::vector<uint8_t>>(sizeof(VolumeConstants) + directionBytes);
+    std::memcpy(data->data(), &plan.constants, sizeof(VolumeConstants));
+    if (directionBytes > 0)
+      std::memcpy(data->data() + sizeof(VolumeConstants), plan.directions.data(), directionBytes);
+    auto mask = std::make_shared<std::vector<uint32_t>>(plan.lightMask);
+    BufferHandle volume = out.constants, maskBuffer = lightMask;
+    return [=](PassContext& ctx) {
+      ctx.upload(volume, data->data(), data->size());
+      ctx.upload(maskBuffer, mask->data(), mask->size() * sizeof(uint32_t));
+    };
+  });
+
+  if (plan.reset) {
+    graph.addPass("DDGI.Reset", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      out.probes.irradiance = b.write(out.probes.irradiance, Access::StorageWrite);
+      out.probes.distance = b.write(out.probes.distance, Access::StorageWrite);
+      out.probes.probeData = b.write(out.probes.probeData, Access::StorageWrite);
+      b.condition([] { return PassDecision::run("new probe textures"); });
+      const ProbeHandles h = out.probes;
+      const std::vector<std::pair<std::string, std::string>> defines = {
+          {"DDGI_IRRADIANCE_FORMAT", textures.irradianceQualifier()},
+          {"DDGI_DISTANCE_FORMAT", textures.distanceQualifier()}};
+      const glm::uvec3 irr = atlasExtent(plan.grid, plan.format.irradianceTexels());
+      const glm::uvec3 dist = atlasExtent(plan.grid, plan.format.distanceTexels());
+      const glm::uvec3 extent = glm::max(irr, dist);
+      return [=](PassContext& ctx) {
+        gpu::Bindings bind;
+        bind.storage("irradianceAtlas", h.irradiance)
+            .storage("distanceAtlas", h.distance)
+            .storage("probeData", h.probeData);
+        ctx.dispatchThreads(ctx.pipelines().compute(shader("reset.comp", defines)), bind, extent);
+      };
+    });
+  }
+
+  const uint32_t probes = plan.probesUpdated();
+  const uint32_t rays = plan.raysPerProbe();
+  const uint64_t rayCount = uint64_t(probes) * rays;
+  graph.addPass("DDGI.Trace", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const BufferHandle volume = b.read(out.constants, Access::StorageRead);
+    const BufferHandle mask = b.read(lightMask, Access::StorageRead);
+    const ProbeHandles h = readProbesSampled(b, out.probes);
+    const RayTracingSceneHandles rt = readRayTracingScene(b, bb);
+    const SceneLightHandles lights = readSceneLights(b, bb);
+    out.rays =
+        b.write(b.createBuffer("DDGI.Rays", {std::max<uint64_t>(rayCount, 1) * 16}), Access::StorageWrite);
+    addConditions(b, plan);
+    const BufferHandle raysOut = out.rays;
+    return [=](PassContext& ctx) {
+      gpu::Bindings bind;
+      bind.buffer("DdgiVolume", volume).buffer("DdgiLightMask", mask).buffer("DdgiRays", raysOut);
+      bind.buffer("SceneLights", lights.lights);
+      bindProbesSampled(bind, h);
+      bindRayTracingScene(bind, rt);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader("trace.comp")), bind,
+                          {uint32_t(std::max<uint64_t>(rayCount, 1)), 1, 1});
+    };
+  });
+
+  // The two blends read the same rays and write different atlases.
+  auto blend = [&](const char* name, bool irradiance) {
+    graph.addPass(name, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      const BufferHandle volume = b.read(out.constants, Access::StorageRead);
+      const BufferHandle raysIn = b.read(out.rays, Access::StorageRead);
+      const TextureHandle data = b.read(out.probes.probeData, Access::Sampled);
+      TextureHandle& atlasHandle = irradiance ? out.probes.irradiance : out.probes.distance;
+      atlasHandle = b.write(atlasHandle, Access::StorageReadWrite);
+      const TextureHandle atlas = atlasHandle;
+      addConditions(b, plan);
+      const uint32_t texels = irradiance ? plan.format.irradianceTexels() : plan.format.distanceTexels();
+      const std::vector<std::pair<std::string, std::string>> defines = {
+          {"DDGI_BLEND_IRRADIANCE", irradiance ? "1" : "0"},
+          {"DDGI_TEXELS", std::to_string(texels)},
+          {"DDGI_RAYS", std::to_string(rays)},
+          {"DDGI_ATLAS_FORMAT", irradiance ? textures.irradianceQualifier() : textures.distanceQualifier()},
+          {"DDGI_IRRADIANCE_MANTISSA_BITS", textures.irradianceMantissaBits()}};
+      return [=](PassContext& ctx) {
+        gpu::Bindings bind;
+        bind.buffer("DdgiVolume", volume).buffer("DdgiRays", raysIn);
+        bind.texture("ddgiProbeData", data, gpu::SamplerKind::NearestClamp).storage("atlas", atlas);
+        // One workgroup of T×T invocations per probe.
+        ctx.dispatchThreads(ctx.pipelines().compute(shader("blend.comp", defines)), bind,
+                            {probes * texels, texels, 1});
+      };
+    });
+  };
+  blend("DDGI.BlendIrradiance", true);
+  blend("DDGI.BlendDistance", false);
+
+  auto probeStates = [&](const char* name, bool relocation, bool enabled, const char* off) {
+    graph.addPass(name, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      const BufferHandle volume = b.read(out.constants, Access::StorageRead);
+      const BufferHandle raysIn = b.read(out.rays, Access::StorageRead);
+      out.probes.probeData = b.write(out.probes.probeData, Access::StorageReadWrite);
+      const TextureHandle data = out.probes.probeData;
+      addConditions(b, plan);
+      b.condition([enabled, off] { return enabled ? PassDecision::run("on") : PassDecision::skip(off); });
+      const std::vector<std::pair<std::string, std::string>> defines = {
+          {"DDGI_RELOCATION", relocation ? "1" : "0"}};
+      return [=](PassContext& ctx) {
+        gpu::Bindings bind;
+        bind.buffer("DdgiVolume", volume).buffer("DdgiRays", raysIn).storage("probeData", data);
+        ctx.dispatchThreads(ctx.pipelines().compute(shader("probe_states.comp", defines)), bind,
+                            {probes, 1, 1});
+      };
+    });
+  };
+  probeStates("DDGI.Relocation", true, (plan.constants.update.z & kFlagRelocation) != 0,
+              "r.DDGI.Relocation is 0");
+  probeStates("DDGI.Classification", false, (plan.constants.update.z & kFlagClassification) != 0,
+              "r.DDGI.Classification is 0");
+  return out;
+}
+
+void addGatherPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
+                   const VolumeFrame& volume) {
+  Blackboard& bb = graph.blackboard();
+  struct GatherPush {
+    glm::mat4 inverseViewProjection;
+    glm::vec4 cameraPosition;
+    glm::uvec4 size;
+  } push{frame.view.inverseViewProjection, glm::vec4(frame.view.position, 1.0f),
+         glm::uvec4(frame.view.width, frame.view.height, 0, 0)};
+  static_assert(sizeof(GatherPush) <= 128);
+  const bool lit = plan.lit;
+  graph.addPass("DDGI.Gather", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const BufferHandle constants = b.read(volume.constants, Access::StorageRead);
+    const ProbeHandles h = readProbesSampled(b, volume.probes);
+    const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+    const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+    const TextureHandle out = b.write(
+        b.createTexture("DDGI.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
+        Access::StorageWrite);
+    bb.setTexture(channels::IndirectDiffuse, out);
+    b.condition([lit, reason = plan.litReason] {
+      return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
+    });
+    return [=](PassContext& ctx) {
+      gpu::Bindings bind;
+      bind.buffer("DdgiVolume", constants);
+      bindProbesSampled(bind, h);
+      bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
+          .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
+          .storage("outIrradiance", out);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader("gather.comp")), bind, {push.size.x, push.size.y, 1},
+                          push);
+    };
+  });
+}
+
+void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
+                  const VolumeFrame& volume, uint32_t mode, float probeRadius) {
+  Blackboard& bb = graph.blackboard();
+  struct DebugPush {
+    glm::mat4 inverseViewProjection;
+    glm::vec4 cameraPosition;
+    glm::uvec4 size;
+  } push{frame.view.inverseViewProjection, glm::vec4(frame.view.position, probeRadius),
+         glm::uvec4(frame.view.width, frame.view.height, mode, 0)};
+  static_assert(sizeof(DebugPush) <= 128);
+  const bool lit = plan.lit;
+  graph.addPass("DDGI.Debug", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const BufferHandle constants = b.read(volume.constants, Access::StorageRead);
+    const ProbeHandles h = readProbesSampled(b, volume.probes);
+    const BufferHandle rays =
+        volume.rays.valid() ? b.readOptional(volume.rays, Access::StorageRead) : BufferHandle{};
+    const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+    const TextureHandle scene = b.read(bb.texture(channels::SceneColor), Access::Sampled);
+    const TextureHandle out =
+        b.write(b.createTexture("DDGI.Debug", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
+                Access::StorageWrite);
+    bb.setTexture(channels::DebugView, out);
+    b.condition([lit, reason = plan.litReason] {
+      return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
+    });
+    return [=](PassContext& ctx) mutable {
+      gpu::Bindings bind;
+      // Without this frame's rays (no update ran), any buffer fills the binding; the
+      // shader is told not to read it.
+      const bool haveRays = rays.valid() && ctx.available(rays);
+      push.size.w = haveRays ? 1u : 0u;
+      bind.buffer("DdgiVolume", constants).buffer("DdgiRays", haveRays ? rays : constants);
+      bindProbesSampled(bind, h);
+      bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
+          .texture("sceneColor", scene, gpu::SamplerKind::NearestClamp)
+          .storage("outDebug", out);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader("debug.comp")), bind, {push.size.x, push.size.y, 1},
+                          push);
+    };
+  });
+}
+
+}  // namespace bounce::ddgi

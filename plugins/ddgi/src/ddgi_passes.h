@@ -1,0 +1,67 @@
+#pragma once
+// DDGI's render-graph passes (../shared/notes/ddgi.md §3):
+//   FrameBegin       DDGI.Constants, DDGI.Reset (new textures only), DDGI.Trace,
+//                    DDGI.BlendIrradiance, DDGI.BlendDistance, DDGI.Relocation,
+//                    DDGI.Classification
+//   IndirectDiffuse  DDGI.Gather: the IndirectDiffuse channel
+
+#include "probe_textures.h"
+
+#include <bounce/frame/frame_context.h>
+#include <bounce/graph/render_graph.h>
+
+#include <glm/glm.hpp>
+
+#include <string>
+#include <vector>
+
+namespace bounce::ddgi {
+
+/// std430 DdgiVolume of shaders/ddgi/volume.glsl, before its ray directions.
+struct VolumeConstants {
+  glm::vec4 firstProbe{0.0f};
+  glm::vec4 spacing{1.0f};
+  glm::ivec4 counts{2};
+  glm::uvec4 texels{0u};
+  glm::uvec4 update{0u};
+  glm::vec4 blend{0.0f};
+  glm::vec4 bias{0.0f};
+  glm::vec4 misc{0.0f};
+};
+static_assert(sizeof(VolumeConstants) == 128);
+
+inline constexpr uint32_t kFlagRelocation = 1, kFlagClassification = 2, kFlagInfiniteBounce = 4;
+
+/// What this frame does with the volume, decided on the CPU.
+struct VolumePlan {
+  ProbeGrid grid;
+  ProbeFormat format;
+  VolumeConstants constants;
+  std::vector<glm::vec4> directions;  ///< this update's ray directions (fixed rays first)
+  std::vector<uint32_t> lightMask;    ///< bit i: light i bounces through DDGI
+  bool reset = false;                 ///< the textures are new: clear them first
+  bool lit = false;                   ///< anything to bounce (flagged light, emission or sky)
+  std::string litReason;              ///< why (or why not), for the frame report
+  bool update = false;                ///< trace and blend this frame
+  std::string updateReason;
+  uint32_t probesUpdated() const { return constants.update.y; }
+  uint32_t raysPerProbe() const { return constants.texels.z; }
+};
+
+/// The buffers and textures a frame's update leaves for shading.
+struct VolumeFrame {
+  BufferHandle constants;
+  ProbeHandles probes;
+  BufferHandle rays;  ///< this update's ray results (debug views), invalid without an update
+};
+
+VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const ProbeTextures& textures,
+                            const ProbeHandles& imported);
+void addGatherPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
+                   const VolumeFrame& volume);
+/// DDGI.Debug: r.DDGI.DebugMode 2..7 (probe spheres, states, ray hits, atlases) as the
+/// DebugView channel. `probeRadius` is in metres.
+void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
+                  const VolumeFrame& volume, uint32_t mode, float probeRadius);
+
+}  // namespace bounce::ddgi

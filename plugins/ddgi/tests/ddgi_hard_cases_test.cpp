@@ -1,0 +1,158 @@
+// DDGI's hard cases with exact answers (../shared/notes/ddgi.md §10), on lavapipe with
+// validation on. Each test prints what it measured, so a failure says by how much.
+
+#include "ddgi_test_support.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace bounce::test {
+namespace {
+
+constexpr double kPi = 3.14159265358979;
+
+class DdgiHardCases : public RenderFixture {};
+
+TEST_F(DdgiHardCases, ClosedFurnaceConvergesAlongTheGeometricSeries) {
+  // H1: a closed room, every surface albedo ρ = 0.5 and emission Le = 1, no lights. Physics:
+  // E = πLe/(1−ρ) = 2π everywhere. With hysteresis 0 and the brightness clamp off each
+  // update adds one bounce: after k updates E_k = E∞(1 − ρᵏ), at every probe texel and so
+  // at every pixel (every weighted average of equal values is that value). Tolerance 0.5%:
+  // the issue asks 2%; what remains is the RGBA16F rounding of the published channel
+  // (measured 0.06%).
+  start("content/tests/white_furnace.gltf",
+        {"r.DDGI.Hysteresis=0", "r.DDGI.BrightnessThreshold=1e9", "r.Bloom.Intensity=0"}, "DDGI");
+  const double rho = 0.5, eInf = kPi * 1.0 / (1.0 - rho);
+  for (int k = 1; k <= 10; ++k) {
+    RenderedFrame f = render(48, 48, {"indirect-irradiance"});
+    ASSERT_TRUE(f.graph.executed("DDGI.Trace"));
+    ASSERT_TRUE(f.graph.executed("DDGI.Gather"));
+    const double expected = eInf * (1.0 - std::pow(rho, k));
+    if (k != 1 && k != 2 && k != 3 && k != 10) continue;
+    const ImageBuffer& e = f.images.at("indirect-irradiance");
+    for (uint32_t c = 0; c < 3; ++c) {
+      const ChannelStats s = channelStats(e, c);
+      std::printf("update %d channel %u: E mean %.4f min %.4f max %.4f, expected %.4f\n", k, c, s.mean, s.min,
+                  s.max, expected);
+      ASSERT_TRUE(s.finite);
+      EXPECT_NEAR(s.min, expected, 0.005 * expected) << "update " << k;
+      EXPECT_NEAR(s.max, expected, 0.005 * expected) << "update " << k;
+    }
+  }
+}
+
+// The note's transcription of RTXGI's irradiance blend (§4.3) for a furnace, where every
+// ray sees the same radiance: the stored gamma-encoded value per update, noise-free. The
+// test oracle for the hysteresis curve, written from the note, not from the shader.
+struct FurnaceTranscription {
+  double rho, le, h, irradianceThreshold, brightnessThreshold, gamma = 5.0;
+  double stored = 0.0;  // x, gamma-encoded E/2π
+  double irradiance() const { return 2.0 * kPi * std::pow(stored, gamma); }
+  void update() {
+    const double radiance = le + rho * irradiance() / kPi;  // hits shaded with the previous irradiance
+    const double x = std::pow(radiance / 2.0, 1.0 / gamma);
+    double hysteresis = stored == 0.0 ? 0.0 : h;
+    double delta = x - stored;
+    if (stored - x > irradianceThreshold) hysteresis = std::max(0.0, hysteresis - 0.75);
+    if (delta > brightnessThreshold) delta *= 0.25;  // grey: luminance(δ) = δ
+    double step = (1.0 - hysteresis) * delta;
+    if (x < stored)
+      step = (step < 0 ? -1.0 : 1.0) * std::min(std::max(1.0 / 1024.0, std::abs(step)), std::abs(delta));
+    stored += step;
+  }
+};
+
+// `v` rounded to the nearest FP16 value (11 significant bits; normal range only, which is
+// all the tests need): what the RGBA16F IndirectDiffuse channel reports.
+// Devices differ in how they convert: lavapipe truncates (measured: its channel reads
+// 6.22266 where the true value is 6.22341), GPUs round to nearest.
+double roundToHalf(double v, bool truncate) {
+  int e = 0;
+  const double m = std::frexp(v, &e);  // v = m·2^e, m in [0.5, 1)
+  const double scaled = std::ldexp(m, 11);
+  return std::ldexp(truncate ? std::floor(scaled) : std::nearbyint(scaled), e - 11);
+}
+
+TEST_F(DdgiHardCases, ClosedFurnaceWithHysteresisFollowsTheTranscribedCurve) {
+  // H1 with RTXGI's defaults (hysteresis 0.97, thresholds 0.25 / 0.10): the number of
+  // updates to reach 99% of E∞ must match the transcription's within ±2 updates (the
+  // note: 578 for ρ = 0.5, Le = 1). 27 probes (spacing 1 m) keep the 600 frames short.
+  start("content/tests/white_furnace.gltf",
+        {"r.DDGI.ProbeSpacing=1", "r.DDGI.RaysPerProbe=64", "r.Bloom.Intensity=0"}, "DDGI");
+  const double eInf = 2.0 * kPi;
+  // The channel is RGBA16F: near 99% one update adds ~4e-4 W/m² and the format's step at
+  // 6.2 is 4e-3, so the crossing is compared as the channel reports it, for either
+  // rounding of the conversion.
+  auto crossing = [&](bool truncate) {
+    FurnaceTranscription model{0.5, 1.0, 0.97, 0.25, 0.10};
+    int updates = 0;
+    while (roundToHalf(model.irradiance(), truncate) < 0.99 * eInf && updates < 5000) {
+      model.update();
+      ++updates;
+    }
+    return updates;
+  };
+  const int nearest = crossing(false), truncated = crossing(true);
+  const int modelUpdates = std::max(nearest, truncated);
+  int gpuUpdates = 0;
+  double e = 0.0;
+  while (gpuUpdates < modelUpdates + 10) {
+    RenderedFrame f = render(4, 4, {"indirect-irradiance"});
+    ++gpuUpdates;
+    e = channelStats(f.images.at("indirect-irradiance"), 1).min;
+    if (e >= 0.99 * eInf) break;
+  }
+  std::printf(
+      "99%% of E = 2π after %d updates (transcription: %d rounding to nearest, %d truncating; the note, "
+      "in float: 578); E %.4f\n",
+      gpuUpdates, nearest, truncated, e);
+  EXPECT_GE(gpuUpdates, std::min(nearest, truncated) - 1);
+  EXPECT_LE(gpuUpdates, std::max(nearest, truncated) + 1);
+}
+
+TEST_F(DdgiHardCases, NothingToBounceCullsEveryPassAndMatchesNoGi) {
+  // The Cornell box with its light not flagged for DDGI and no emissive material: every
+  // DDGI pass is culled with the reason, and the image equals the one without GI.
+  start("content/cornell_box.gltf", {"Light.DdgiIndirectLighting=0", "r.Bloom.Intensity=0"}, "DDGI");
+  RenderedFrame f = render(32, 32, {"radiance"});
+  for (const char* pass :
+       {"DDGI.Constants", "DDGI.Trace", "DDGI.BlendIrradiance", "DDGI.BlendDistance", "DDGI.Gather"}) {
+    EXPECT_FALSE(f.graph.executed(pass)) << pass;
+    for (const CompiledPass& p : f.graph.passes)
+      if (p.name == pass) {
+        EXPECT_NE(p.reason.find("nothing to bounce"), std::string::npos) << p.reason;
+      }
+  }
+  const ImageBuffer withDdgi = f.images.at("radiance");
+  finish();
+  start("content/cornell_box.gltf", {"r.Bloom.Intensity=0"}, "none");
+  const ImageBuffer none = render(32, 32, {"radiance"}).images.at("radiance");
+  ASSERT_EQ(withDdgi.pixels.size(), none.pixels.size());
+  for (size_t i = 0; i < none.pixels.size(); ++i) ASSERT_EQ(withDdgi.pixels[i], none.pixels[i]) << i;
+}
+
+TEST_F(DdgiHardCases, ALightSwitchedOffReachesExactlyZero) {
+  // H4: converge with the light on, then set its intensity to 0 (still flagged): the
+  // darkening step of at least 1/1024 per update takes every stored value to exactly 0,
+  // within ⌈1024·x⌉ updates of the largest stored value x ≤ 1 (the stored values here are
+  // (E/2π)^(1/5) < 1).
+  start("content/cornell_box.gltf", {"r.DDGI.Hysteresis=0.5", "r.Bloom.Intensity=0"}, "DDGI");
+  for (int i = 0; i < 8; ++i) render(24, 24, {});
+  const ChannelStats lit =
+      channelStats(render(24, 24, {"indirect-irradiance"}).images.at("indirect-irradiance"), 1);
+  std::printf("lit: indirect E mean %.4f max %.4f\n", lit.mean, lit.max);
+  ASSERT_GT(lit.mean, 0.01);
+  engine->scene()->editLight(0, [](Light& l) { l.intensity = 0.0f; });
+  int updates = 0;
+  double maxE = lit.max;
+  for (; updates < 1100 && maxE > 0.0; ++updates)
+    maxE = channelStats(render(8, 8, {"indirect-irradiance"}).images.at("indirect-irradiance"), 1).max;
+  std::printf("light off: indirect E reached %.6g after %d updates\n", maxE, updates);
+  EXPECT_EQ(maxE, 0.0);
+  EXPECT_LE(updates, 1024);
+}
+
+}  // namespace
+}  // namespace bounce::test

@@ -1,0 +1,133 @@
+// The probe grid, atlas layout, memory and ray directions on the CPU.
+
+#include "probe_grid.h"
+#include "probe_rays.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace bounce::ddgi {
+namespace {
+
+TEST(ProbeGrid, FitsProbesHalfASpacingInsideEveryFace) {
+  const Aabb room{{-2.0f, 0.0f, -1.0f}, {2.0f, 3.0f, 1.0f}};
+  const ProbeGrid g = fitGrid(room, 1.0f);
+  EXPECT_EQ(g.counts, glm::ivec3(4, 3, 2));
+  EXPECT_FLOAT_EQ(g.spacing.x, 1.0f);
+  EXPECT_FLOAT_EQ(g.spacing.z, 1.0f);
+  const Aabb probes = g.probeBounds();
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_NEAR(probes.min[a] - room.min[a], g.spacing[a] * 0.5f, 1e-5f) << a;
+    EXPECT_NEAR(room.max[a] - probes.max[a], g.spacing[a] * 0.5f, 1e-5f) << a;
+    EXPECT_LE(g.spacing[a], 1.0f + 1e-6f);
+  }
+  EXPECT_EQ(g.validate(8, 10), "");
+}
+
+TEST(ProbeGrid, FlatAndEmptyScenesStillGetATwoProbeCage) {
+  const ProbeGrid flat = fitGrid(Aabb{{-1.0f, 0.0f, -1.0f}, {1.0f, 0.0f, 1.0f}}, 0.5f);
+  EXPECT_EQ(flat.counts.y, 2);
+  EXPECT_EQ(flat.validate(8, 10), "");
+  const ProbeGrid empty = fitGrid(Aabb{}, 0.0f);
+  EXPECT_EQ(empty.counts, glm::ivec3(2));
+  EXPECT_EQ(empty.validate(8, 10), "");
+  EXPECT_TRUE(std::isfinite(automaticSpacing(Aabb{})));
+}
+
+TEST(ProbeGrid, RefusesFewerThanTwoProbesAndBadSpacing) {
+  ProbeGrid g;
+  g.counts = {1, 4, 4};
+  EXPECT_NE(g.validate(8, 10).find("at least 2"), std::string::npos);
+  g.counts = {2, 2, 2};
+  g.spacing = {1.0f, NAN, 1.0f};
+  EXPECT_NE(g.validate(8, 10).find("finite"), std::string::npos);
+  g.spacing = glm::vec3(1.0f);
+  g.counts = {4000, 2, 2};
+  EXPECT_NE(g.validate(8, 10).find("16384"), std::string::npos);
+}
+
+TEST(ProbeGrid, IndexAndCoordinatesRoundTripInRtxgiOrder) {
+  ProbeGrid g;
+  g.counts = {3, 4, 5};
+  std::set<uint32_t> seen;
+  for (int y = 0; y < 4; ++y)
+    for (int z = 0; z < 5; ++z)
+      for (int x = 0; x < 3; ++x) {
+        const uint32_t i = g.probeIndex({x, y, z});
+        EXPECT_EQ(i, uint32_t(x + 3 * z + 15 * y));  // x + Cx·z + Cx·Cz·y (Y-up, right-handed)
+        EXPECT_EQ(g.probeCoords(i), glm::ivec3(x, y, z));
+        seen.insert(i);
+      }
+  EXPECT_EQ(seen.size(), g.probeCount());
+  EXPECT_EQ(atlasExtent(g, 8), glm::uvec3(24, 40, 4));
+}
+
+TEST(ProbeFormat, BytesPerProbeFollowTheFormula) {
+  ProbeFormat lavapipe;  // 6² interior RGBA32F irradiance, 8² interior RG16F distance
+  EXPECT_EQ(lavapipe.bytesPerProbe(), 8u * 8u * 16u + 10u * 10u * 4u + 8u);  // 1432 B
+  ProbeFormat gpu;  // the note's GPU column: RGBA16F, 14² distance
+  gpu.irradianceStorage = IrradianceStorage::Float16;
+  gpu.distanceInterior = 14;
+  EXPECT_EQ(gpu.bytesPerProbe(), 1544u);
+  // The talk's 1168 B/probe (GDC 2019 slide 76): 6² B10G11R11 irradiance with its border
+  // and 16² RG16F distance, plus the 8-byte relocation/state texel.
+  ProbeFormat seed;
+  seed.irradianceInterior = 4;
+  seed.distanceInterior = 14;
+  seed.irradianceStorage = IrradianceStorage::Compact;
+  EXPECT_EQ(seed.bytesPerProbe() - ProbeFormat::kProbeDataBytes, 1168u);
+}
+
+TEST(ProbeFormat, LargeCellsNeedThirtyTwoBitDistances) {
+  ProbeGrid small;
+  small.spacing = glm::vec3(3.0f);
+  EXPECT_FALSE(needsWideDistance(small));
+  ProbeGrid large;
+  large.spacing = glm::vec3(150.0f);  // 1.5·|s| = 390 m; squared 152,000 > 65504
+  EXPECT_TRUE(needsWideDistance(large));
+}
+
+TEST(UpdateRange, RoundRobinCoversEveryProbeOnce) {
+  EXPECT_EQ(updateRange(100, 0, 7).count, 100u);
+  EXPECT_EQ(updateRange(100, 200, 7).count, 100u);
+  std::vector<int> hits(100, 0);
+  for (uint64_t u = 0; u < 4; ++u) {
+    const UpdateRange r = updateRange(100, 25, u);
+    for (uint32_t i = 0; i < r.count; ++i) hits[(r.first + i) % 100]++;
+  }
+  for (int h : hits) EXPECT_EQ(h, 1);
+}
+
+TEST(ProbeRays, FixedRaysStayAndTheRestRotate) {
+  const glm::mat3 rotation = randomRotation(0.3f, 0.6f, 0.9f);
+  EXPECT_NEAR(glm::determinant(rotation), 1.0f, 1e-5f);
+  const glm::mat3 identityCheck = glm::transpose(rotation) * rotation;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(identityCheck[i][j], i == j ? 1.0f : 0.0f, 1e-5f);
+  const auto a = probeRayDirections(128, kFixedRays, rotation);
+  const auto b = probeRayDirections(128, kFixedRays, randomRotation(0.1f, 0.2f, 0.7f));
+  ASSERT_EQ(a.size(), 128u);
+  glm::vec3 mean(0.0f);
+  for (uint32_t r = 0; r < 128; ++r) {
+    EXPECT_NEAR(glm::length(glm::vec3(a[r])), 1.0f, 1e-5f);
+    if (r < kFixedRays)
+      EXPECT_EQ(a[r], b[r]) << r;
+    else
+      mean += glm::vec3(a[r]);
+  }
+  // The spherical Fibonacci lattice is balanced: its mean direction is near 0.
+  EXPECT_LT(glm::length(mean / 96.0f), 0.02f);
+  EXPECT_NE(a[kFixedRays], b[kFixedRays]);
+}
+
+TEST(ProbeRays, TheSameSeedGivesTheSameRotations) {
+  RayRotations x(7), y(7), z(8);
+  const glm::mat3 a = x.next(), b = y.next(), c = z.next();
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+}
+
+}  // namespace
+}  // namespace bounce::ddgi
