@@ -69,6 +69,12 @@ HDR_PANEL_RADIANCE = 1.0e4         # W/(m^2 sr): 10^4 x the walls' emission
 SMALL_EMITTER_SIZE = 0.02          # m, a cube far smaller than any voxel the tests use
 SMALL_EMITTER_RADIANCE = 1.0e4     # W/(m^2 sr)
 SMALL_EMITTER_HEIGHT = 1.0         # m above the floor
+SUNLIT_ROOM_SIZE = (4.0, 2.5, 4.0)   # m, interior (x, y, z)
+SUNLIT_WALL_THICKNESS = 0.2        # m: real walls, thick against the probe spacing
+SUNLIT_WINDOW = (1.2, 1.0, 1.0)    # m: width, height, sill height; in the +z wall, centred
+SUNLIT_ALBEDO = 0.6
+SUNLIT_SUN_IRRADIANCE = 10.0       # W/m^2 at normal incidence
+SUNLIT_SUN_ELEVATION_DEGREES = 30.0  # the sun shines in towards -z, down at this angle
 TINY_SCENE_SIZE = 0.1              # m, a floor tile with a 4 cm box: inside one 1 m voxel
 
 # --- glTF constants ---------------------------------------------------------------------
@@ -440,6 +446,40 @@ def tiny_scene():
     return s
 
 
+def x_rotation(degrees):
+    """A glTF quaternion [x, y, z, w] turning by `degrees` about +x (negative tilts -z down)."""
+    half = math.radians(degrees) / 2
+    return [math.sin(half), 0.0, 0.0, math.cos(half)]
+
+
+def sunlit_room():
+    """A closed room with 20 cm walls lit only by the sun through a window: the light
+    enters as a patch on the floor and reaches the rest by bouncing; the sunlit outer face
+    of the window wall must not leak in."""
+    s = GltfScene("closed room, 20 cm walls, lit only by the sun through a window in the +z wall")
+    wall = s.material("Wall", (SUNLIT_ALBEDO,) * 3, extras=VOXELIZE_FLAG)
+    (w, h, d), t = SUNLIT_ROOM_SIZE, SUNLIT_WALL_THICKNESS
+    ww, wh, sill = SUNLIT_WINDOW
+    hx, hz = w / 2, d / 2
+    s.object("Floor", Geometry().box((w + 2 * t, t, d + 2 * t)), wall, (0, -t / 2, 0))
+    s.object("Ceiling", Geometry().box((w + 2 * t, t, d + 2 * t)), wall, (0, h + t / 2, 0))
+    s.object("Back", Geometry().box((w, h, t)), wall, (0, h / 2, -hz - t / 2))
+    s.object("Left", Geometry().box((t, h, d + 2 * t)), wall, (-hx - t / 2, h / 2, 0))
+    s.object("Right", Geometry().box((t, h, d + 2 * t)), wall, (hx + t / 2, h / 2, 0))
+    # The window wall in four pieces around the opening.
+    z = hz + t / 2
+    side = (w - ww) / 2
+    s.object("FrontLeft", Geometry().box((side, h, t)), wall, (-hx + side / 2, h / 2, z))
+    s.object("FrontRight", Geometry().box((side, h, t)), wall, (hx - side / 2, h / 2, z))
+    s.object("BelowWindow", Geometry().box((ww, sill, t)), wall, (0, sill / 2, z))
+    top = h - sill - wh
+    s.object("AboveWindow", Geometry().box((ww, top, t)), wall, (0, sill + wh + top / 2, z))
+    s.light("Sun", "directional", SUNLIT_SUN_IRRADIANCE, (0, h + 2, hz + 3),
+            x_rotation(-SUNLIT_SUN_ELEVATION_DEGREES), extras=INDIRECT_LIGHT_FLAG)
+    s.camera("Inside", (0, 1.6, hz - 0.2), x_rotation(-20.0), yfov=1.2)
+    return s
+
+
 def main():
     repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -458,6 +498,7 @@ def main():
     small_emitter().write(os.path.join(tests, "small_emitter.gltf"))
     degenerate_geometry().write(os.path.join(tests, "degenerate_geometry.gltf"))
     tiny_scene().write(os.path.join(tests, "tiny_scene.gltf"))
+    sunlit_room().write(os.path.join(tests, "sunlit_room.gltf"))
 
 
 if __name__ == "__main__":
