@@ -8,6 +8,7 @@
 //   IndirectDiffuse  DDGI.Gather
 //   DebugView        the indirect irradiance alone while r.DDGI.DebugMode is 1
 
+#include "convergence.h"
 #include "ddgi_passes.h"
 #include "ddgi_settings.h"
 #include "probe_rays.h"
@@ -88,6 +89,36 @@ class DdgiPlugin final : public Plugin {
           "nothing to bounce: no light with DDGI indirect lighting, no emissive material, no sky";
   }
 
+  // What the probes' content depends on: the scene (geometry, transforms, materials,
+  // lights), every r.DDGI setting but the debug and shading-only ones, and the biases
+  // as post-process volumes blend them here. A change restarts the updates.
+  uint64_t contentKey(const FrameContext& frame, const VolumeConstants& c) const {
+    uint64_t key = 1469598103934665603ull;  // FNV-1a offset basis
+    auto mix = [&key](auto value) { key = (key ^ std::hash<decltype(value)>{}(value)) * 1099511628211ull; };
+    mix(static_cast<const void*>(&frame.scene));
+    for (SceneChange kind :
+         {SceneChange::Geometry, SceneChange::Transform, SceneChange::Material, SceneChange::Light})
+      mix(frame.scene.revision(kind));
+    for (const CVar* v : frame.cvars.list("r.DDGI.")) {
+      const std::string& name = v->name();
+      if (name.rfind("r.DDGI.Debug", 0) == 0 || name == "r.DDGI.Intensity") continue;
+      mix(name);
+      mix(v->valueText());
+    }
+    mix(c.bias.x);
+    mix(c.bias.y);
+    return key;
+  }
+
+  float maxAlbedo(const Scene& scene) const {
+    float rho = 0.0f;
+    for (const Material& m : scene.materials()) {
+      const glm::vec3 c = glm::vec3(m.baseColorFactor) * (1.0f - std::clamp(m.metallicFactor, 0.0f, 1.0f));
+      rho = std::max({rho, c.r, c.g, c.b});
+    }
+    return rho;
+  }
+
   void update(RenderGraph& graph, const FrameContext& frame) {
     frame_.reset();
     VolumePlan plan;
@@ -120,15 +151,6 @@ class DdgiPlugin final : public Plugin {
     const uint32_t fixed = relocation || classification ? kFixedRays : 0;
     const UpdateRange range =
         updateRange(plan.grid.probeCount(), uint32_t(settings_.updateBudget.get()), updates_);
-    plan.update = plan.lit;
-    plan.updateReason = plan.reset ? "first update of new probes"
-                                   : fmt::format("update {} of {} probes", updates_ + 1, range.count);
-    if (plan.update) {
-      plan.directions = probeRayDirections(rays, fixed, rotations_.next());
-      ++updates_;
-    } else {
-      plan.directions = probeRayDirections(rays, fixed, glm::mat3(1.0f));
-    }
 
     const float minSpacing = std::min({plan.grid.spacing.x, plan.grid.spacing.y, plan.grid.spacing.z});
     VolumeConstants& c = plan.constants;
@@ -148,6 +170,35 @@ class DdgiPlugin final : public Plugin {
         settings_.minFrontfaceDistance.get() * minSpacing, settings_.randomRayBackfaceThreshold.get());
     c.misc = glm::vec4(settings_.fixedRayBackfaceThreshold.get(), settings_.encodingGamma.get(),
                        frame.setting(settings_.intensity), settings_.skyRadiance.get());
+
+    // Updates stop once a static scene's probes have converged; any change restarts them.
+    const uint64_t key = contentKey(frame, c);
+    if (plan.reset || key != contentKey_) framesSinceChange_ = 0;
+    contentKey_ = key;
+    // A brightness threshold below 1 (gamma-encoded luminance) can damp ordinary steps.
+    const uint64_t needed =
+        framesToConverge(settings_.hysteresis.get(), maxAlbedo(frame.scene), settings_.infiniteBounce.get(),
+                         settings_.brightnessThreshold.get() < 1.0f, plan.grid.probeCount(),
+                         uint32_t(settings_.updateBudget.get()));
+    const bool converged = framesSinceChange_ >= needed;
+    plan.update = plan.lit && !converged;
+    if (converged)
+      plan.updateReason = fmt::format(
+          "converged: nothing changed for {} frames (scene, r.DDGI settings); a change "
+          "restarts the updates",
+          framesSinceChange_);
+    else if (plan.reset)
+      plan.updateReason = "first update of new probes";
+    else
+      plan.updateReason = fmt::format("update {} of {} probes ({} of {} frames to converge)", updates_ + 1,
+                                      range.count, framesSinceChange_ + 1, needed);
+    if (plan.update) {
+      plan.directions = probeRayDirections(rays, fixed, rotations_.next());
+      ++updates_;
+      ++framesSinceChange_;
+    } else {
+      plan.directions = probeRayDirections(rays, fixed, glm::mat3(1.0f));
+    }
 
     const ProbeHandles imported = textures_.import(graph);
     VolumeFrame volume = addUpdatePasses(graph, plan, textures_, imported);
@@ -200,6 +251,8 @@ class DdgiPlugin final : public Plugin {
   RayRotations rotations_;
   int32_t seed_ = -1;
   uint64_t updates_ = 0;
+  uint64_t contentKey_ = 0;
+  uint64_t framesSinceChange_ = 0;
   std::optional<Frame> frame_;
   std::string lastError_;
   std::string lastUpdate_ = "not rendered yet";

@@ -225,5 +225,32 @@ TEST_F(DdgiHardCases, TheSameSeedGivesTheSameImage) {
   EXPECT_FALSE(a == c);
 }
 
+TEST_F(DdgiHardCases, UpdatesStopWhenConvergedAndAChangeRestartsThem) {
+  // A static scene stops tracing once its probes have converged (hysteresis 0, albedo 0.5:
+  // 2·⌈ln(1/2048)/ln 0.5⌉ = 22 frames), the report says why, and the image stays; editing
+  // a material restarts the updates.
+  start("content/tests/white_furnace.gltf", {"r.DDGI.Hysteresis=0", "r.Bloom.Intensity=0"}, "DDGI");
+  auto reason = [](const RenderedFrame& f, const char* pass) {
+    for (const CompiledPass& p : f.graph.passes)
+      if (p.name == pass) return p.reason;
+    return std::string();
+  };
+  RenderedFrame f;
+  int updates = 0;
+  for (int i = 0; i < 30; ++i) {
+    f = render(8, 8, {"indirect-irradiance"});
+    if (f.graph.executed("DDGI.Trace")) ++updates;
+  }
+  std::printf("updates before stopping: %d; then: %s\n", updates, reason(f, "DDGI.Trace").c_str());
+  EXPECT_EQ(updates, 22);
+  EXPECT_FALSE(f.graph.executed("DDGI.BlendIrradiance"));
+  EXPECT_TRUE(f.graph.executed("DDGI.Gather"));
+  EXPECT_NE(reason(f, "DDGI.Trace").find("converged"), std::string::npos);
+  EXPECT_NEAR(channelStats(f.images.at("indirect-irradiance"), 1).mean, 2.0 * kPi, 0.005 * 2.0 * kPi);
+  engine->scene()->editMaterial(0, [](Material& m) { m.emissiveStrength = 2.0f; });
+  f = render(8, 8, {"indirect-irradiance"});
+  EXPECT_TRUE(f.graph.executed("DDGI.Trace")) << reason(f, "DDGI.Trace");
+}
+
 }  // namespace
 }  // namespace bounce::test

@@ -1,6 +1,7 @@
 // The probe grid, atlas layout, memory and ray directions on the CPU.
 
 #include "probe_grid.h"
+#include "convergence.h"
 #include "probe_rays.h"
 
 #include <gtest/gtest.h>
@@ -127,6 +128,21 @@ TEST(ProbeRays, TheSameSeedGivesTheSameRotations) {
   const glm::mat3 a = x.next(), b = y.next(), c = z.next();
   EXPECT_EQ(a, b);
   EXPECT_NE(a, c);
+}
+
+TEST(Convergence, FollowsTheDecayOfHysteresisAndBounce) {
+  // 2·⌈ln(1/2048) / ln d⌉ with d = h + (1 − h)ρ (the note's linear EMA), or with a quarter
+  // of the step under the brightness damping.
+  EXPECT_EQ(framesToConverge(0.97f, 0.5f, true, false, 100, 0), 1010u);
+  EXPECT_EQ(framesToConverge(0.97f, 0.8f, true, false, 100, 0), 2534u);
+  EXPECT_EQ(framesToConverge(0.97f, 0.8f, false, false, 100, 0), 502u);  // h alone
+  EXPECT_EQ(framesToConverge(0.97f, 0.5f, true, true, 100, 0), 4060u);
+  EXPECT_EQ(framesToConverge(0.0f, 0.5f, true, false, 100, 0), 22u);  // 0.5^11 < 1/2048
+  EXPECT_EQ(framesToConverge(0.0f, 0.0f, true, false, 100, 0), 2u);
+  // A budget of 30 of 100 probes: 4 frames per update of every probe.
+  EXPECT_EQ(framesToConverge(0.97f, 0.5f, true, false, 100, 30), 4u * 1010u);
+  // Albedo 1 still ends.
+  EXPECT_LT(framesToConverge(0.97f, 1.0f, true, true, 100, 0), 1000000u);
 }
 
 }  // namespace
