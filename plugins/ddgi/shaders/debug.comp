@@ -1,5 +1,6 @@
 #version 460
-// DDGI.Debug: what the probes hold, drawn over the lit scene (r.DDGI.DebugMode).
+// DDGI.Debug: what the probes hold, drawn over the tone-mapped scene (r.DDGI.DebugMode).
+// Sphere colours are HDR values through Reinhard (x / (1 + x)), so they read like the image.
 //   2 probe spheres shaded by the irradiance stored for their normal's direction
 //   3 probe spheres shaded by the mean distance in that direction (white: 1.5 spacings)
 //   4 probe states: green active, red inactive; relocated probes drawn at their new
@@ -13,7 +14,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 4) uniform sampler2D gDepth;
-layout(binding = 5) uniform sampler2D sceneColor;
+layout(binding = 5) uniform sampler2D sceneColor;  // scene.ldr: sRGB, read back as linear
 layout(std430, binding = 6) readonly buffer DdgiRays { vec4 ddgiRays[]; };
 layout(binding = 7, rgba16f) uniform writeonly image2D outDebug;
 
@@ -24,14 +25,17 @@ layout(push_constant) uniform Push {
 };
 
 vec3 atlasView(vec2 uv, bool irradiance) {
-  // Layers (probe planes along Y) side by side.
-  float layers = float(ddgiCounts.y);
-  float layer = min(floor(uv.x * layers), layers - 1.0);
-  vec3 p = vec3(fract(uv.x * layers), uv.y, layer);
+  // Layers (probe planes along Y) tiled in a near-square grid, bottom plane first.
+  int layers = ddgiCounts.y;
+  int columns = int(ceil(sqrt(float(layers))));
+  int rows = (layers + columns - 1) / columns;
+  vec2 cell = uv * vec2(columns, rows);
+  int layer = int(floor(cell.y)) * columns + int(floor(cell.x));
+  if (layer >= layers) return vec3(0.0);
+  vec3 p = vec3(fract(cell), float(layer));
   if (irradiance) {
     vec3 e = texture(ddgiIrradianceAtlas, p).rgb;
-    vec3 x = pow(max(e, vec3(0.0)), vec3(ddgiMisc.y));  // back to E / 2π
-    return x * 2.0 * PI;
+    return pow(max(e, vec3(0.0)), vec3(ddgiMisc.y)) * 2.0;  // E / π
   }
   float maxDistance = 1.5 * length(ddgiSpacing.xyz);
   return vec3(texture(ddgiDistanceAtlas, p).r / maxDistance);
@@ -43,7 +47,8 @@ void main() {
   vec2 uv = (vec2(p) + 0.5) / vec2(size.xy);
   uint mode = size.z;
   if (mode == 6u || mode == 7u) {
-    imageStore(outDebug, p, vec4(atlasView(uv, mode == 6u), 1.0));
+    vec3 a = atlasView(uv, mode == 6u);
+    imageStore(outDebug, p, vec4(a / (1.0 + a), 1.0));
     return;
   }
   vec3 color = texelFetch(sceneColor, p, 0).rgb;
@@ -83,7 +88,8 @@ void main() {
       color = vec3(0.5);
     } else if (mode == 2u) {
       vec3 stored = texture(ddgiIrradianceAtlas, ddgiProbeUV(c, n, ddgiTexels.x)).rgb;
-      color = pow(max(stored, vec3(0.0)), vec3(ddgiMisc.y)) * 2.0 * PI;  // E in W/m²
+      // E / π: the radiance a white surface there would reflect.
+      color = pow(max(stored, vec3(0.0)), vec3(ddgiMisc.y)) * 2.0;
     } else if (mode == 3u) {
       color = vec3(texture(ddgiDistanceAtlas, ddgiProbeUV(c, n, ddgiTexels.y)).r / (1.5 * length(ddgiSpacing.xyz)));
     } else if (mode == 4u) {
@@ -107,6 +113,7 @@ void main() {
       }
     }
   }
-  color = any(isnan(color)) ? vec3(0.0) : min(color, vec3(65504.0));
+  if (bestProbe >= 0) color = color / (1.0 + color);  // the background is already tone-mapped
+  color = any(isnan(color)) ? vec3(0.0) : clamp(color, vec3(0.0), vec3(1.0));
   imageStore(outDebug, p, vec4(color, 1.0));
 }

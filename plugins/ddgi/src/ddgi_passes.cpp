@@ -220,7 +220,7 @@ void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePla
     const BufferHandle rays =
         volume.rays.valid() ? b.readOptional(volume.rays, Access::StorageRead) : BufferHandle{};
     const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
-    const TextureHandle scene = b.read(bb.texture(channels::SceneColor), Access::Sampled);
+    const TextureHandle scene = b.read(bb.texture(channels::SceneColorLdr), Access::Sampled);
     const TextureHandle out =
         b.write(b.createTexture("DDGI.Debug", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
                 Access::StorageWrite);

@@ -75,5 +75,33 @@ TEST_F(DdgiAccuracy, SunlitRoomIndirectLightMatchesTheMultiBounceReference) {
   EXPECT_LT(a.radianceRmse, 0.15);
 }
 
+class DdgiDebugViews : public RenderFixture {};
+
+TEST_F(DdgiDebugViews, EveryModeIsListedAndVisiblyDiffersFromTheLitImage) {
+  start("content/cornell_box.gltf", {"r.Bloom.Intensity=0"}, "DDGI");
+  for (int i = 0; i < 3; ++i) render(48, 48, {});
+  const ImageBuffer lit = render(48, 48, {}, true).images.at("display");
+  int listed = 0;
+  for (const auto& v : engine->debugViews().all())
+    if (v.origin == "DDGI") ++listed;
+  EXPECT_EQ(listed, 7);
+  for (int mode = 1; mode <= 7; ++mode) {
+    engine->console().execute(fmt::format("r.DDGI.DebugMode {}", mode));
+    RenderedFrame f = render(48, 48, {}, true);
+    const ImageBuffer& shown = f.images.at("display");
+    double difference = 0;
+    for (size_t i = 0; i < lit.pixels.size(); ++i)
+      difference += std::abs(double(shown.pixels[i]) - lit.pixels[i]);
+    difference /= double(lit.pixels.size());
+    std::printf("debug mode %d: mean |display - lit| = %.3f\n", mode, difference);
+    EXPECT_GT(difference, 0.02) << "mode " << mode;
+    if (mode >= 2) {
+      EXPECT_TRUE(f.graph.executed("DDGI.Debug")) << "mode " << mode;
+    }
+  }
+  engine->console().execute("r.DDGI.DebugMode 0");
+  EXPECT_FALSE(render(48, 48, {}, true).graph.executed("DDGI.Debug"));
+}
+
 }  // namespace
 }  // namespace bounce::test
