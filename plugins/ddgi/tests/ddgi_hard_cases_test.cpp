@@ -328,5 +328,77 @@ TEST_F(DdgiHardCases, AProbeInsideGeometryIsMovedOutThroughTheNearestFace) {
   EXPECT_EQ(off, 0);
 }
 
+// Two closed 2 m rooms side by side along x, sharing a wall `wall` thick; 10 cm slabs
+// elsewhere; a point light in the left room only.
+std::unique_ptr<Scene> twoRoomsScene(float wall) {
+  auto s = std::make_unique<Scene>();
+  Material grey;
+  grey.name = "wall";
+  grey.baseColorFactor = glm::vec4(0.73f, 0.73f, 0.73f, 1.0f);
+  grey.metallicFactor = 0.0f;
+  const uint32_t m = s->addMaterial(grey);
+  const float t = 0.1f, half = wall * 0.5f, outer = 2.0f + half;
+  auto slab = [&](const char* name, glm::vec3 size, glm::vec3 centre) {
+    s->addInstance({.name = name,
+                    .mesh = s->addMesh(generated::box(size, false, m, name)),
+                    .world = glm::translate(glm::mat4(1.0f), centre)});
+  };
+  const float width = 2.0f * outer + 2.0f * t;
+  slab("floor", {width, t, 2.0f + 2.0f * t}, {0.0f, -t / 2, 0.0f});
+  slab("ceiling", {width, t, 2.0f + 2.0f * t}, {0.0f, 2.0f + t / 2, 0.0f});
+  slab("back", {width, 2.0f, t}, {0.0f, 1.0f, -1.0f - t / 2});
+  slab("front", {width, 2.0f, t}, {0.0f, 1.0f, 1.0f + t / 2});
+  slab("left", {t, 2.0f, 2.0f}, {-outer - t / 2, 1.0f, 0.0f});
+  slab("right", {t, 2.0f, 2.0f}, {outer + t / 2, 1.0f, 0.0f});
+  slab("shared", {wall, 2.0f, 2.0f}, {0.0f, 1.0f, 0.0f});
+  Light light;
+  light.name = "light";
+  light.type = LightType::Point;
+  light.intensity = 10.0f;
+  light.position = {-1.0f - half, 1.5f, 0.0f};
+  s->addLight(light);
+  return s;
+}
+
+TEST_F(DdgiHardCases, LeakThroughAWallFallsWithItsThickness) {
+  // H5: the dark room's floor within one probe spacing (0.5 m) of the shared wall, against
+  // the lit room's mirror-image floor band, for walls of 0.05 to 1 spacing. Physically 0
+  // (the reference path tracer's too, so the note's "≤ 2× the reference" becomes a bound on
+  // the fraction). Measured: 1.95% at 0.05 spacing, 0.80% at 0.1, below 0.003% from 0.25 on:
+  // probes on the far side see the wall's front faces, and the Chebyshev test then rejects
+  // them for points behind it once the wall is thicker than the bias. Bounds: 3% for any
+  // wall, 0.1% from a quarter spacing on.
+  const float spacing = 0.5f;
+  double previous = 1e30;
+  for (const float fraction : {0.05f, 0.1f, 0.25f, 0.5f, 1.0f}) {
+    const float wall = fraction * spacing;
+    start("content/tests/emissive_quad.gltf",
+          {fmt::format("r.DDGI.ProbeSpacing={}", spacing), "r.DDGI.Hysteresis=0.5", "r.Bloom.Intensity=0"},
+          "DDGI");
+    engine->setScene(twoRoomsScene(wall));
+    // Looking straight down at the floor band next to the wall, from either side.
+    auto band = [&](float side) {
+      Camera c;
+      c.world = glm::translate(glm::mat4(1.0f), {side * (wall * 0.5f + spacing * 0.5f), 1.0f, 0.0f}) *
+                glm::rotate(glm::mat4(1.0f), -1.5707963f, glm::vec3(1.0f, 0.0f, 0.0f));
+      c.yfov = 0.45f;  // ~0.46 m of floor: the band
+      return FrameView::fromCamera(c, 16, 16);
+    };
+    for (int i = 0; i < 16; ++i) render(band(-1.0f), {});
+    const double lit =
+        channelStats(render(band(-1.0f), {"indirect-irradiance"}).images.at("indirect-irradiance"), 1).mean;
+    const double dark =
+        channelStats(render(band(1.0f), {"indirect-irradiance"}).images.at("indirect-irradiance"), 1).mean;
+    finish();
+    const double leak = dark / std::max(lit, 1e-9);
+    std::printf("wall %.3f m (%.2f spacing): dark band E %.4f, lit band E %.4f, leak %.4f\n", wall, fraction,
+                dark, lit, leak);
+    EXPECT_GT(lit, 0.01);
+    EXPECT_LE(leak, previous + 1e-3) << "leak must not grow with the wall's thickness";
+    EXPECT_LT(leak, fraction >= 0.25f ? 0.001 : 0.03) << wall;
+    previous = leak;
+  }
+}
+
 }  // namespace
 }  // namespace bounce::test
