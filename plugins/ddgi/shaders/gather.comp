@@ -1,7 +1,8 @@
 #version 460
 // DDGI.Gather (note §4.8, pass P6): the indirect irradiance E at every G-buffer pixel,
 // from the probes, published as the IndirectDiffuse channel (the composite adds
-// albedo/π × E).
+// albedo/π × E). At a lighting-pass scale 1/k it shades every k-th pixel in x and y and
+// DDGI.Upsample fills the rest.
 #define DDGI_VOLUME_BINDING 0
 #include "ddgi/irradiance.glsl"
 #include "bounce/gbuffer.glsl"
@@ -14,15 +15,18 @@ layout(binding = 6, rgba16f) uniform writeonly image2D outIrradiance;
 layout(push_constant) uniform Push {
   mat4 inverseViewProjection;
   vec4 cameraPosition;
-  uvec4 size;  // xy: output size
+  uvec4 size;  // xy: view size, z: k (output pixel i shades view pixel i·k + k/2)
 };
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (p.x >= int(size.x) || p.y >= int(size.y)) return;
+  ivec2 o = ivec2(gl_GlobalInvocationID.xy);
+  int k = max(int(size.z), 1);
+  ivec2 outSize = (ivec2(size.xy) + k - 1) / k;
+  if (o.x >= outSize.x || o.y >= outSize.y) return;
+  ivec2 p = min(o * k + k / 2, ivec2(size.xy) - 1);
   float depth = texelFetch(gDepth, p, 0).r;
   if (isBackground(depth)) {
-    imageStore(outIrradiance, p, vec4(0.0));
+    imageStore(outIrradiance, o, vec4(0.0));
     return;
   }
   vec2 uv = (vec2(p) + 0.5) / vec2(size.xy);
@@ -32,5 +36,5 @@ void main() {
   vec3 E = ddgiIrradiance(P, ddgiSurfaceBias(N, V), N) * ddgiVolumeWeight(P) * ddgiMisc.z;
   // 65504: the largest RGBA16F value; NaN from bad data becomes 0, never an output.
   E = any(isnan(E)) ? vec3(0.0) : min(E, vec3(65504.0));
-  imageStore(outIrradiance, p, vec4(E, 1.0));
+  imageStore(outIrradiance, o, vec4(E, 1.0));
 }

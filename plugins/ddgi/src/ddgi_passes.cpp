@@ -168,28 +168,33 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
 }
 
 void addGatherPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
-                   const VolumeFrame& volume) {
+                   const VolumeFrame& volume, uint32_t k) {
   Blackboard& bb = graph.blackboard();
   struct GatherPush {
     glm::mat4 inverseViewProjection;
     glm::vec4 cameraPosition;
     glm::uvec4 size;
   } push{frame.view.inverseViewProjection, glm::vec4(frame.view.position, 1.0f),
-         glm::uvec4(frame.view.width, frame.view.height, 0, 0)};
+         glm::uvec4(frame.view.width, frame.view.height, k, 0)};
   static_assert(sizeof(GatherPush) <= 128);
   const bool lit = plan.lit;
+  auto litCondition = [lit, reason = plan.litReason] {
+    return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
+  };
+  const glm::uvec2 gatheredSize((frame.view.width + k - 1) / k, (frame.view.height + k - 1) / k);
+  TextureHandle gathered;
   graph.addPass("DDGI.Gather", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const BufferHandle constants = b.read(volume.constants, Access::StorageRead);
     const ProbeHandles h = readProbesSampled(b, volume.probes);
     const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
     const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-    const TextureHandle out = b.write(
-        b.createTexture("DDGI.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
-        Access::StorageWrite);
-    bb.setTexture(channels::IndirectDiffuse, out);
-    b.condition([lit, reason = plan.litReason] {
-      return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
-    });
+    gathered =
+        b.write(b.createTexture(k == 1 ? "DDGI.IndirectIrradiance" : "DDGI.Gathered",
+                                TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, 1.0f / float(k))),
+                Access::StorageWrite);
+    if (k == 1) bb.setTexture(channels::IndirectDiffuse, gathered);
+    b.condition(litCondition);
+    const TextureHandle out = gathered;
     return [=](PassContext& ctx) {
       gpu::Bindings bind;
       bind.buffer("DdgiVolume", constants);
@@ -197,8 +202,28 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const VolumePl
       bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
           .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
           .storage("outIrradiance", out);
-      ctx.dispatchThreads(ctx.pipelines().compute(shader("gather.comp")), bind, {push.size.x, push.size.y, 1},
-                          push);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader("gather.comp")), bind,
+                          {gatheredSize.x, gatheredSize.y, 1}, push);
+    };
+  });
+  if (k == 1) return;
+  graph.addPass("DDGI.Upsample", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+    const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+    const TextureHandle low = b.read(gathered, Access::Sampled);
+    const TextureHandle out = b.write(
+        b.createTexture("DDGI.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
+        Access::StorageWrite);
+    bb.setTexture(channels::IndirectDiffuse, out);
+    b.condition(litCondition);
+    return [=](PassContext& ctx) {
+      gpu::Bindings bind;
+      bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
+          .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
+          .texture("gathered", low, gpu::SamplerKind::NearestClamp)
+          .storage("outIrradiance", out);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader("upsample.comp")), bind,
+                          {push.size.x, push.size.y, 1}, push);
     };
   });
 }

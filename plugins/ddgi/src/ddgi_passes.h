@@ -3,7 +3,8 @@
 //   FrameBegin       DDGI.Constants, DDGI.Reset (new textures only), DDGI.Trace,
 //                    DDGI.BlendIrradiance, DDGI.BlendDistance, DDGI.Relocation,
 //                    DDGI.Classification
-//   IndirectDiffuse  DDGI.Gather: the IndirectDiffuse channel
+//   IndirectDiffuse  DDGI.Gather (+ DDGI.Upsample below full resolution): the
+//                    IndirectDiffuse channel
 
 #include "probe_textures.h"
 
@@ -57,8 +58,9 @@ struct VolumeFrame {
 
 VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const ProbeTextures& textures,
                             const ProbeHandles& imported);
+/// DDGI.Gather at 1/k of the view's resolution (k = 1, 2 or 4), and DDGI.Upsample when k > 1.
 void addGatherPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
-                   const VolumeFrame& volume);
+                   const VolumeFrame& volume, uint32_t k);
 /// DDGI.Debug: r.DDGI.DebugMode 2..7 (probe spheres, states, ray hits, atlases) as the
 /// DebugView channel. `probeRadius` is in metres.
 void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,

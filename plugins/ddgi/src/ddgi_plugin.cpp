@@ -5,7 +5,7 @@
 // Per frame:
 //   FrameBegin       DDGI.Constants, DDGI.Reset, DDGI.Trace, DDGI.BlendIrradiance,
 //                    DDGI.BlendDistance, DDGI.Relocation, DDGI.Classification
-//   IndirectDiffuse  DDGI.Gather
+//   IndirectDiffuse  DDGI.Gather, DDGI.Upsample (below full resolution)
 //   DebugView        the indirect irradiance alone while r.DDGI.DebugMode is 1
 
 #include "convergence.h"
@@ -208,7 +208,10 @@ class DdgiPlugin final : public Plugin {
 
   void gather(RenderGraph& graph, const FrameContext& frame) {
     if (!frame_) return;
-    addGatherPass(graph, frame, frame_->plan, frame_->volume);
+    // The declaration allows 1, 0.5 and 0.25 only; anything else gathers every pixel.
+    const float scale = settings_.lightingPassScale.get();
+    const uint32_t k = scale == 0.5f ? 2u : scale == 0.25f ? 4u : 1u;
+    addGatherPass(graph, frame, frame_->plan, frame_->volume, k);
   }
 
   void debug(RenderGraph& graph, const FrameContext& frame) {

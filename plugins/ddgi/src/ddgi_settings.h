@@ -33,7 +33,7 @@ struct DdgiSettings {
   CVarRef<float> hysteresis, irradianceThreshold, brightnessThreshold, distanceExponent, encodingGamma;
   CVarRef<float> maxRayDistance, randomRayBackfaceThreshold, fixedRayBackfaceThreshold, minFrontfaceDistance;
   // Shading (post-process-volume settings).
-  CVarRef<float> intensity, normalBias, viewBias, skyRadiance;
+  CVarRef<float> intensity, normalBias, viewBias, skyRadiance, lightingPassScale;
   // Debugging.
   CVarRef<int32_t> debugMode;
   CVarRef<float> debugProbeRadius;

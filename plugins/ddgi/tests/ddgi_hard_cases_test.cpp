@@ -82,7 +82,8 @@ TEST_F(DdgiHardCases, ClosedFurnaceWithHysteresisFollowsTheTranscribedCurve) {
   // H1 with hysteresis 0.97: the number of updates to reach 99% of E∞ must match the
   // transcription's within the rounding of the channel: with Bounce's thresholds (RTXGI's
   // Test Harness, 0.2 / 1.0; the note: 269 updates for ρ = 0.5, Le = 1) and with the SDK's
-  // (0.25 / 0.10; the note: 578). 27 probes (spacing 1 m) keep the frames cheap.
+  // (0.25 / 0.10; the note: 578). 27 probes (spacing 1 m) keep the frames cheap; the gather
+  // runs at full resolution, so every pixel is one probe lookup (no upsampling rounding).
   const double eInf = 2.0 * kPi;
   struct Thresholds {
     const char* name;
@@ -93,7 +94,7 @@ TEST_F(DdgiHardCases, ClosedFurnaceWithHysteresisFollowsTheTranscribedCurve) {
        {Thresholds{"Bounce (Test Harness)", 0.2, 1.0, 269}, Thresholds{"RTXGI SDK", 0.25, 0.10, 578}}) {
     start("content/tests/white_furnace.gltf",
           {"r.DDGI.ProbeSpacing=1", "r.DDGI.RaysPerProbe=64", "r.Bloom.Intensity=0",
-           fmt::format("r.DDGI.IrradianceThreshold={}", t.irradiance),
+           "r.DDGI.LightingPassScale=1", fmt::format("r.DDGI.IrradianceThreshold={}", t.irradiance),
            fmt::format("r.DDGI.BrightnessThreshold={}", t.brightness)},
           "DDGI");
     // The channel is RGBA16F: near 99% one update adds ~4e-4 W/m² and the format's step
