@@ -21,7 +21,8 @@ class PluginHostTest : public ::testing::Test {
   DebugViewRegistry debugViews;
   AovRegistry aovs;
   QualityKnobRegistry knobs;
-  EngineServices services{cvars, console, config, parameters, hooks, debugViews, aovs, knobs};
+  SceneVolumeKinds volumeKinds;
+  EngineServices services{cvars, console, config, parameters, hooks, debugViews, aovs, knobs, volumeKinds};
   PluginHost host{services};
 };
 

@@ -198,5 +198,58 @@ TEST(GltfPostProcessVolumes, MisspelledFieldsAndWrongTypesWarn) {
   EXPECT_FALSE(r.scene->postProcessVolumes()[0].unbound);
 }
 
+TEST(GltfSceneVolumes, DeclaredKindsBecomeVolumesWithTheirFields) {
+  SceneExtrasSchema schema;
+  schema.volumeKinds = {
+      {.name = "ProbeVolume", .help = "", .fields = {"Spacing", "Counts", "Enabled", "Label"}}};
+  GltfBuilder b;
+  b.node({{"name", "Hall"},
+          {"translation", {1, 2, 3}},
+          {"scale", {2, 1, 4}},
+          {"extras",
+           {{"ProbeVolume",
+             {{"Spacing", 1.5}, {"Counts", {4, 2, 8}}, {"Enabled", false}, {"Label", "hall"}}}}}});
+  b.node({{"name", "Undeclared"}, {"extras", {{"OtherVolume", {{"Spacing", 1}}}}}});
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir, "scene.gltf", &schema);
+  ASSERT_TRUE(r.scene) << r.error;
+  ASSERT_EQ(r.scene->volumes().size(), 1u);
+  const SceneVolume& v = r.scene->volumes()[0];
+  EXPECT_EQ(v.kind, "ProbeVolume");
+  EXPECT_EQ(v.name, "Hall");
+  EXPECT_EQ(v.number("Spacing"), 1.5);
+  EXPECT_EQ(v.triple("Counts"), glm::dvec3(4, 2, 8));
+  EXPECT_EQ(v.flag("Enabled"), false);
+  EXPECT_EQ(std::get<std::string>(v.settings.at("Label")), "hall");
+  EXPECT_FALSE(v.number("Counts"));  // another type: absent as a number
+  // The box is the node's transform applied to [-1,1]³.
+  const Aabb box = v.box();
+  EXPECT_NEAR(box.min.x, -1.0f, 1e-6f);
+  EXPECT_NEAR(box.max.z, 7.0f, 1e-6f);
+  EXPECT_EQ(r.scene->volumes("ProbeVolume").size(), 1u);
+  EXPECT_TRUE(r.scene->volumes("OtherVolume").empty());
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+}
+
+TEST(GltfSceneVolumes, UnknownFieldsAndBadValuesWarnAndAreLeftOut) {
+  SceneExtrasSchema schema;
+  schema.volumeKinds = {{.name = "ProbeVolume", .help = "", .fields = {"Spacing", "Counts"}}};
+  GltfBuilder b;
+  b.node({{"name", "A"}, {"extras", {{"ProbeVolume", {{"Spacng", 1.0}, {"Counts", {1, "x", 3}}}}}}});
+  b.node({{"name", "B"}, {"extras", {{"ProbeVolume", 5}}}});
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir, "scene.gltf", &schema);
+  ASSERT_TRUE(r.scene) << r.error;
+  ASSERT_EQ(r.scene->volumes().size(), 1u);
+  EXPECT_TRUE(r.scene->volumes()[0].settings.empty());
+  ASSERT_EQ(r.warnings.size(), 3u);
+  EXPECT_NE(r.warnings[0].find("unknown field 'Spacng' (did you mean 'Spacing'?)"), std::string::npos)
+      << r.warnings[0];
+  EXPECT_NE(r.warnings[1].find("'Counts' is an array of something other than finite numbers"),
+            std::string::npos)
+      << r.warnings[1];
+  EXPECT_NE(r.warnings[2].find("not an object"), std::string::npos) << r.warnings[2];
+}
+
 }  // namespace
 }  // namespace bounce

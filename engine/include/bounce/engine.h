@@ -72,6 +72,7 @@ class Engine {
   const AovRegistry& aovs() const { return aovs_; }
   QualityKnobRegistry& qualityKnobs() { return knobs_; }
   const QualityKnobRegistry& qualityKnobs() const { return knobs_; }
+  const SceneVolumeKinds& sceneVolumeKinds() const { return volumeKinds_; }
   PluginHost& plugins() { return *plugins_; }
   EngineServices& services() { return services_; }
 
@@ -131,7 +132,9 @@ class Engine {
   DebugViewRegistry debugViews_;
   AovRegistry aovs_;
   QualityKnobRegistry knobs_;
-  EngineServices services_{cvars_, console_, config_, parameters_, hooks_, debugViews_, aovs_, knobs_};
+  SceneVolumeKinds volumeKinds_;
+  EngineServices services_{cvars_,      console_, config_, parameters_, hooks_,
+                           debugViews_, aovs_,    knobs_,  volumeKinds_};
   std::unique_ptr<PluginHost> plugins_;
   std::unique_ptr<Scene> scene_;
 

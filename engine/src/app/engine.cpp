@@ -329,6 +329,7 @@ SceneExtrasSchema Engine::extrasSchema() const {
   schema.lightKeys = parameters_.names(ObjectKind::Light);
   for (const CVar* c : cvars_.list())
     if (!c->postProcessName().empty()) schema.postProcessSettings.push_back(c->postProcessName());
+  for (const SceneVolumeKinds::Kind& k : volumeKinds_.all()) schema.volumeKinds.push_back(k.desc);
   return schema;
 }
 

@@ -25,6 +25,7 @@ void EngineServices::removeOwnedBy(OwnerId owner) {
   debugViews.removeOwnedBy(owner);
   aovs.removeOwnedBy(owner);
   knobs.removeOwnedBy(owner);
+  volumeKinds.removeOwnedBy(owner);
   console.removeOwnedBy(owner);
   parameters.removeOwnedBy(owner);  // before the variables holding its defaults
   cvars.removeOwnedBy(owner);

@@ -40,8 +40,8 @@ ObjectParameterValues parametersFromExtras(const LoadContext& ctx, const tinyglt
     const tinygltf::Value& v = extras.Get(key);
     if (known && std::find(known->begin(), known->end(), key) == known->end()) {
       auto& entry = ctx.unknownKeys[fmt::format("{}\n{}", objectKindName(kind), key)];
-      entry.message = fmt::format("unknown extras key '{}'{}; no loaded plugin declares this {} parameter", key,
-                                  suggestion(key, *known), toLower(objectKindName(kind)));
+      entry.message = fmt::format("unknown extras key '{}'{}; no loaded plugin declares this {} parameter",
+                                  key, suggestion(key, *known), toLower(objectKindName(kind)));
       entry.elements.push_back(std::string(element));
     }
     if (v.IsBool()) {
@@ -131,6 +131,69 @@ std::optional<PostProcessVolume> postProcessVolumeFromExtras(const LoadContext& 
     }
   }
   return volume;
+}
+
+std::vector<SceneVolume> sceneVolumesFromExtras(const LoadContext& ctx, const tinygltf::Node& node,
+                                                std::string_view element, const glm::mat4& world) {
+  std::vector<SceneVolume> out;
+  if (!ctx.schema || !node.extras.IsObject()) return out;
+  for (const SceneVolumeKindDesc& kind : ctx.schema->volumeKinds) {
+    if (!node.extras.Has(kind.name)) continue;
+    const tinygltf::Value& desc = node.extras.Get(kind.name);
+    const std::string where = fmt::format("{} {}", element, kind.name);
+    if (!desc.IsObject()) {
+      ctx.warn(where, fmt::format("is a JSON {}, not an object; ignored", valueTypeName(desc)));
+      continue;
+    }
+    SceneVolume volume;
+    volume.kind = kind.name;
+    volume.name = node.name;
+    volume.world = world;
+    for (const std::string& key : desc.Keys()) {
+      if (!kind.fields.empty() &&
+          std::find(kind.fields.begin(), kind.fields.end(), key) == kind.fields.end()) {
+        ctx.warn(where, fmt::format("unknown field '{}'{}; ignored", key, suggestion(key, kind.fields)));
+        continue;
+      }
+      const tinygltf::Value& v = desc.Get(key);
+      if (v.IsBool()) {
+        volume.settings[key] = v.Get<bool>();
+      } else if (v.IsNumber()) {
+        const double d = v.GetNumberAsDouble();
+        if (!std::isfinite(d)) {
+          ctx.warn(where, fmt::format("'{}' is not finite; ignored", key));
+          continue;
+        }
+        volume.settings[key] = d;
+      } else if (v.IsString()) {
+        volume.settings[key] = v.Get<std::string>();
+      } else if (v.IsArray()) {
+        std::vector<double> numbers;
+        bool ok = true;
+        for (size_t i = 0; i < v.ArrayLen(); ++i) {
+          const tinygltf::Value& e = v.Get(int(i));
+          if (!e.IsNumber() || !std::isfinite(e.GetNumberAsDouble())) {
+            ok = false;
+            break;
+          }
+          numbers.push_back(e.GetNumberAsDouble());
+        }
+        if (!ok) {
+          ctx.warn(where,
+                   fmt::format("'{}' is an array of something other than finite numbers; ignored", key));
+          continue;
+        }
+        volume.settings[key] = std::move(numbers);
+      } else {
+        ctx.warn(where,
+                 fmt::format("'{}' is a JSON {}; fields are bool, number, string or an array of numbers, "
+                             "ignored",
+                             key, valueTypeName(v)));
+      }
+    }
+    out.push_back(std::move(volume));
+  }
+  return out;
 }
 
 }  // namespace bounce::gltf

@@ -7,6 +7,7 @@
 
 #include "bounce/scene/object_parameters.h"
 #include "bounce/scene/post_process_volume.h"
+#include "bounce/scene/scene_volume.h"
 
 #include <glm/glm.hpp>
 
@@ -26,5 +27,11 @@ std::optional<PostProcessVolume> postProcessVolumeFromExtras(const LoadContext& 
                                                              const tinygltf::Node& node,
                                                              std::string_view element,
                                                              const glm::mat4& world);
+
+/// The plugin-declared volumes a node's `extras` hold (one per declared key present),
+/// placed by the node's world transform. Members that are not bool, number, string or an
+/// array of numbers, and members the kind does not declare, are reported.
+std::vector<SceneVolume> sceneVolumesFromExtras(const LoadContext& ctx, const tinygltf::Node& node,
+                                                std::string_view element, const glm::mat4& world);
 
 }  // namespace bounce::gltf

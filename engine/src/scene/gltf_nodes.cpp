@@ -138,6 +138,8 @@ void placeNode(const LoadContext& ctx, Scene& scene, SceneMeshes& meshes, int in
   if (auto volume = postProcessVolumeFromExtras(ctx, n, element, world)) {
     scene.addPostProcessVolume(std::move(*volume));
   }
+  for (SceneVolume& volume : sceneVolumesFromExtras(ctx, n, element, world))
+    scene.addVolume(std::move(volume));
 }
 
 }  // namespace

@@ -134,7 +134,22 @@ uint32_t Scene::addPostProcessVolume(PostProcessVolume volume) {
   return index;
 }
 
+uint32_t Scene::addVolume(SceneVolume volume) {
+  sceneVolumes_.push_back(std::move(volume));
+  const auto index = uint32_t(sceneVolumes_.size() - 1);
+  // A new volume changes what a plugin builds as much as new geometry does.
+  record(SceneChange::Geometry, index, {}, {});
+  return index;
+}
+
 // --- reading ----------------------------------------------------------------------------
+
+std::vector<const SceneVolume*> Scene::volumes(std::string_view kind) const {
+  std::vector<const SceneVolume*> out;
+  for (const SceneVolume& v : sceneVolumes_)
+    if (v.kind == kind) out.push_back(&v);
+  return out;
+}
 
 Aabb Scene::bounds() const {
   Aabb all;

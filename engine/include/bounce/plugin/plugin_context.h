@@ -10,6 +10,7 @@
 #include "bounce/frame/quality_knobs.h"
 #include "bounce/plugin/plugin_descriptor.h"
 #include "bounce/scene/object_parameters.h"
+#include "bounce/scene/scene_volume.h"
 
 #include <string>
 
@@ -25,6 +26,7 @@ struct EngineServices {
   DebugViewRegistry& debugViews;
   AovRegistry& aovs;
   QualityKnobRegistry& knobs;
+  SceneVolumeKinds& volumeKinds;  ///< last, so plugins built before it keep their offsets
 
   /// Removes everything `owner` registered, from every registry.
   void removeOwnedBy(OwnerId owner);
@@ -75,6 +77,10 @@ class PluginContext {
   void addQualityKnob(QualityKnobDesc desc) {
     services_.knobs.add(std::move(desc), owner_, descriptor_.name);
   }
+
+  /// A kind of scene volume: glTF nodes whose extras hold an object under `desc.name`
+  /// load as SceneVolume entries of Scene::volumes() (e.g. "DDGIVolume").
+  void addSceneVolumeKind(SceneVolumeKindDesc desc) { services_.volumeKinds.add(std::move(desc), owner_); }
 
   /// Read access to engine state.
   const CVarRegistry& cvars() const { return services_.cvars; }

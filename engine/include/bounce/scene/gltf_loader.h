@@ -2,6 +2,7 @@
 // glTF 2.0 (.gltf and .glb) loading with tinygltf.
 
 #include "bounce/scene/scene.h"
+#include "bounce/scene/scene_volume.h"
 
 #include <memory>
 #include <string>
@@ -14,6 +15,7 @@ struct SceneExtrasSchema {
   std::vector<std::string> materialKeys;
   std::vector<std::string> lightKeys;
   std::vector<std::string> postProcessSettings;
+  std::vector<SceneVolumeKindDesc> volumeKinds;  ///< node extras keys that make SceneVolumes
 };
 
 struct GltfLoadResult {

@@ -8,6 +8,7 @@
 #include "bounce/scene/material.h"
 #include "bounce/scene/mesh.h"
 #include "bounce/scene/post_process_volume.h"
+#include "bounce/scene/scene_volume.h"
 
 #include <cstdint>
 #include <functional>
@@ -44,6 +45,8 @@ class Scene {
   uint32_t addLight(Light light);
   uint32_t addCamera(Camera camera);
   uint32_t addPostProcessVolume(PostProcessVolume volume);
+  /// A plugin-declared volume (a glTF node's extras object; see scene_volume.h).
+  uint32_t addVolume(SceneVolume volume);
   void setSourcePath(std::string path) { sourcePath_ = std::move(path); }
 
   // --- reading ------------------------------------------------------------------------
@@ -55,6 +58,9 @@ class Scene {
   const std::vector<Light>& lights() const { return lights_; }
   const std::vector<Camera>& cameras() const { return cameras_; }
   const std::vector<PostProcessVolume>& postProcessVolumes() const { return volumes_; }
+  const std::vector<SceneVolume>& volumes() const { return sceneVolumes_; }
+  /// The volumes of one kind, in file order.
+  std::vector<const SceneVolume*> volumes(std::string_view kind) const;
   /// World bounds of all instances.
   Aabb bounds() const;
   size_t triangleCount() const;
@@ -95,6 +101,7 @@ class Scene {
   std::vector<Light> lights_;
   std::vector<Camera> cameras_;
   std::vector<PostProcessVolume> volumes_;
+  std::vector<SceneVolume> sceneVolumes_;
 
   uint64_t revision_ = 0;
   uint64_t kindRevision_[size_t(SceneChange::Count)] = {};
