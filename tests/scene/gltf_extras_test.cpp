@@ -243,11 +243,12 @@ TEST(GltfSceneVolumes, UnknownFieldsAndBadValuesWarnAndAreLeftOut) {
   ASSERT_EQ(r.scene->volumes().size(), 1u);
   EXPECT_TRUE(r.scene->volumes()[0].settings.empty());
   ASSERT_EQ(r.warnings.size(), 3u);
-  EXPECT_NE(r.warnings[0].find("unknown field 'Spacng' (did you mean 'Spacing'?)"), std::string::npos)
-      << r.warnings[0];
-  EXPECT_NE(r.warnings[1].find("'Counts' is an array of something other than finite numbers"),
-            std::string::npos)
+  // Members in key order.
+  EXPECT_NE(r.warnings[1].find("unknown field 'Spacng' (did you mean 'Spacing'?)"), std::string::npos)
       << r.warnings[1];
+  EXPECT_NE(r.warnings[0].find("'Counts' is an array of something other than finite numbers"),
+            std::string::npos)
+      << r.warnings[0];
   EXPECT_NE(r.warnings[2].find("not an object"), std::string::npos) << r.warnings[2];
 }
 
