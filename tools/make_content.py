@@ -480,6 +480,16 @@ def sunlit_room():
     return s
 
 
+def sunlit_room_air_volume():
+    """The sunlit room with a DDGI probe volume fitted to its air, not to its walls: the
+    walls lie half a cell outside the outermost probes, where the bounce must not be lost."""
+    s = sunlit_room()
+    w, h, d = SUNLIT_ROOM_SIZE
+    s.node("ProbeVolume", (0, h / 2, 0), scale_=(w / 2, h / 2, d / 2),
+           extras={"DDGIVolume": {"ProbeCounts": [5, 3, 5]}})
+    return s
+
+
 def main():
     repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -499,6 +509,7 @@ def main():
     degenerate_geometry().write(os.path.join(tests, "degenerate_geometry.gltf"))
     tiny_scene().write(os.path.join(tests, "tiny_scene.gltf"))
     sunlit_room().write(os.path.join(tests, "sunlit_room.gltf"))
+    sunlit_room_air_volume().write(os.path.join(tests, "sunlit_room_air_volume.gltf"))
 
 
 if __name__ == "__main__":

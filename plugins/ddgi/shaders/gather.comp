@@ -2,7 +2,8 @@
 // DDGI.Gather (note §4.8, pass P6): the indirect irradiance E at every G-buffer pixel,
 // from the probes, published as the IndirectDiffuse channel (the composite adds
 // albedo/π × E). At a lighting-pass scale 1/k it shades every k-th pixel in x and y and
-// DDGI.Upsample fills the rest.
+// DDGI.Upsample fills the rest. With several volumes each gather adds w·E and w to the
+// previous one's sums (DDGI_ACCUMULATE) and the last divides (DDGI_FINAL).
 #define DDGI_VOLUME_BINDING 0
 #include "ddgi/irradiance.glsl"
 #include "bounce/gbuffer.glsl"
@@ -11,6 +12,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 4) uniform sampler2D gDepth;
 layout(binding = 5) uniform sampler2D gNormalRoughness;
 layout(binding = 6, rgba16f) uniform writeonly image2D outIrradiance;
+#if DDGI_ACCUMULATE
+layout(binding = 7) uniform sampler2D previousSum;  // rgb: Σ w E of the volumes before, a: Σ w
+#endif
 
 layout(push_constant) uniform Push {
   mat4 inverseViewProjection;
@@ -25,6 +29,10 @@ void main() {
   if (o.x >= outSize.x || o.y >= outSize.y) return;
   ivec2 p = min(o * k + k / 2, ivec2(size.xy) - 1);
   float depth = texelFetch(gDepth, p, 0).r;
+  vec4 sum = vec4(0.0);
+#if DDGI_ACCUMULATE
+  sum = texelFetch(previousSum, o, 0);
+#endif
   if (isBackground(depth)) {
     imageStore(outIrradiance, o, vec4(0.0));
     return;
@@ -33,8 +41,18 @@ void main() {
   vec3 P = worldPositionFromDepth(uv, depth, inverseViewProjection);
   vec3 N = safeNormalize(texelFetch(gNormalRoughness, p, 0).xyz, vec3(0.0, 1.0, 0.0));
   vec3 V = safeNormalize(P - cameraPosition.xyz, -N);
-  vec3 E = ddgiIrradiance(P, ddgiSurfaceBias(N, V), N) * ddgiVolumeWeight(P) * ddgiMisc.z;
-  // 65504: the largest RGBA16F value; NaN from bad data becomes 0, never an output.
-  E = any(isnan(E)) ? vec3(0.0) : min(E, vec3(65504.0));
-  imageStore(outIrradiance, o, vec4(E, 1.0));
+  float w = ddgiVolumeWeight(P);
+  if (w > 0.0) {
+    vec3 E = ddgiIrradiance(P, ddgiSurfaceBias(N, V), N) * ddgiMisc.z;
+    // NaN from bad data becomes 0, never an output.
+    sum += any(isnan(E)) ? vec4(0.0, 0.0, 0.0, w) : vec4(w * E, w);
+  }
+#if DDGI_FINAL
+  // Overlapping volumes average; a lone volume's fading edge fades the light.
+  vec3 E = sum.rgb / max(sum.a, 1.0);
+  // 65504: the largest RGBA16F value.
+  imageStore(outIrradiance, o, vec4(min(E, vec3(65504.0)), 1.0));
+#else
+  imageStore(outIrradiance, o, min(sum, vec4(65504.0)));
+#endif
 }

@@ -35,7 +35,7 @@ void addConditions(PassBuilder& b, const VolumePlan& plan) {
 }  // namespace
 
 VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const ProbeTextures& textures,
-                            const ProbeHandles& imported) {
+                            const ProbeHandles& imported, const std::string& suffix) {
   Blackboard& bb = graph.blackboard();
   VolumeFrame out;
   out.probes = imported;
@@ -43,12 +43,12 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
 
   // The volume's constants and this update's ray directions, and the light mask.
   BufferHandle lightMask;
-  graph.addPass("DDGI.Constants", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+  graph.addPass(std::string("DDGI.Constants") + suffix, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const uint64_t directionBytes = plan.directions.size() * sizeof(glm::vec4);
-    out.constants = b.write(
-        b.createBuffer("DDGI.Volume", {sizeof(VolumeConstants) + std::max<uint64_t>(directionBytes, 16)}),
-        Access::TransferDst);
-    lightMask = b.write(b.createBuffer("DDGI.LightMask", {plan.lightMask.size() * sizeof(uint32_t)}),
+    out.constants = b.write(b.createBuffer("DDGI.Volume" + suffix, {sizeof(VolumeConstants) +
+                                                                    std::max<uint64_t>(directionBytes, 16)}),
+                            Access::TransferDst);
+    lightMask = b.write(b.createBuffer("DDGI.LightMask" + suffix, {plan.lightMask.size() * sizeof(uint32_t)}),
                         Access::TransferDst);
     b.condition([lit, reason = plan.litReason] {
       return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
@@ -66,7 +66,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
   });
 
   if (plan.reset) {
-    graph.addPass("DDGI.Reset", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    graph.addPass(std::string("DDGI.Reset") + suffix, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       out.probes.irradiance = b.write(out.probes.irradiance, Access::StorageWrite);
       out.probes.distance = b.write(out.probes.distance, Access::StorageWrite);
       out.probes.probeData = b.write(out.probes.probeData, Access::StorageWrite);
@@ -91,14 +91,14 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
   const uint32_t probes = plan.probesUpdated();
   const uint32_t rays = plan.raysPerProbe();
   const uint64_t rayCount = uint64_t(probes) * rays;
-  graph.addPass("DDGI.Trace", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+  graph.addPass(std::string("DDGI.Trace") + suffix, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const BufferHandle volume = b.read(out.constants, Access::StorageRead);
     const BufferHandle mask = b.read(lightMask, Access::StorageRead);
     const ProbeHandles h = readProbesSampled(b, out.probes);
     const RayTracingSceneHandles rt = readRayTracingScene(b, bb);
     const SceneLightHandles lights = readSceneLights(b, bb);
-    out.rays =
-        b.write(b.createBuffer("DDGI.Rays", {std::max<uint64_t>(rayCount, 1) * 16}), Access::StorageWrite);
+    out.rays = b.write(b.createBuffer("DDGI.Rays" + suffix, {std::max<uint64_t>(rayCount, 1) * 16}),
+                       Access::StorageWrite);
     addConditions(b, plan);
     const BufferHandle raysOut = out.rays;
     return [=](PassContext& ctx) {
@@ -114,7 +114,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
 
   // The two blends read the same rays and write different atlases.
   auto blend = [&](const char* name, bool irradiance) {
-    graph.addPass(name, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    graph.addPass(std::string(name) + suffix, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       const BufferHandle volume = b.read(out.constants, Access::StorageRead);
       const BufferHandle raysIn = b.read(out.rays, Access::StorageRead);
       const TextureHandle data = b.read(out.probes.probeData, Access::Sampled);
@@ -143,7 +143,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
   blend("DDGI.BlendDistance", false);
 
   auto probeStates = [&](const char* name, bool relocation, bool enabled, const char* off) {
-    graph.addPass(name, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    graph.addPass(std::string(name) + suffix, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       const BufferHandle volume = b.read(out.constants, Access::StorageRead);
       const BufferHandle raysIn = b.read(out.rays, Access::StorageRead);
       out.probes.probeData = b.write(out.probes.probeData, Access::StorageReadWrite);
@@ -167,8 +167,9 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
   return out;
 }
 
-void addGatherPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
-                   const VolumeFrame& volume, uint32_t k) {
+void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::vector<GatherSource>& sources,
+                     uint32_t k) {
+  if (sources.empty()) return;
   Blackboard& bb = graph.blackboard();
   struct GatherPush {
     glm::mat4 inverseViewProjection;
@@ -177,40 +178,49 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const VolumePl
   } push{frame.view.inverseViewProjection, glm::vec4(frame.view.position, 1.0f),
          glm::uvec4(frame.view.width, frame.view.height, k, 0)};
   static_assert(sizeof(GatherPush) <= 128);
-  const bool lit = plan.lit;
-  auto litCondition = [lit, reason = plan.litReason] {
+  const VolumePlan& first = *sources.front().plan;
+  auto litCondition = [lit = first.lit, reason = first.litReason] {
     return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
   };
   const glm::uvec2 gatheredSize((frame.view.width + k - 1) / k, (frame.view.height + k - 1) / k);
-  TextureHandle gathered;
-  graph.addPass("DDGI.Gather", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    const BufferHandle constants = b.read(volume.constants, Access::StorageRead);
-    const ProbeHandles h = readProbesSampled(b, volume.probes);
-    const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
-    const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-    gathered =
-        b.write(b.createTexture(k == 1 ? "DDGI.IndirectIrradiance" : "DDGI.Gathered",
-                                TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, 1.0f / float(k))),
-                Access::StorageWrite);
-    if (k == 1) bb.setTexture(channels::IndirectDiffuse, gathered);
-    b.condition(litCondition);
-    const TextureHandle out = gathered;
-    return [=](PassContext& ctx) {
-      gpu::Bindings bind;
-      bind.buffer("DdgiVolume", constants);
-      bindProbesSampled(bind, h);
-      bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
-          .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
-          .storage("outIrradiance", out);
-      ctx.dispatchThreads(ctx.pipelines().compute(shader("gather.comp")), bind,
-                          {gatheredSize.x, gatheredSize.y, 1}, push);
-    };
-  });
+  TextureHandle sum;
+  for (size_t i = 0; i < sources.size(); ++i) {
+    const GatherSource& source = sources[i];
+    const bool accumulate = i > 0, last = i + 1 == sources.size();
+    graph.addPass("DDGI.Gather" + source.suffix, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      const BufferHandle constants = b.read(source.volume.constants, Access::StorageRead);
+      const ProbeHandles h = readProbesSampled(b, source.volume.probes);
+      const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+      const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+      const TextureHandle previous = accumulate ? b.read(sum, Access::Sampled) : TextureHandle{};
+      const bool published = last && k == 1;
+      sum = b.write(b.createTexture(
+                        published ? std::string("DDGI.IndirectIrradiance") : "DDGI.Gathered" + source.suffix,
+                        TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, 1.0f / float(k))),
+                    Access::StorageWrite);
+      if (published) bb.setTexture(channels::IndirectDiffuse, sum);
+      b.condition(litCondition);
+      const TextureHandle out = sum;
+      const std::vector<std::pair<std::string, std::string>> defines = {
+          {"DDGI_ACCUMULATE", accumulate ? "1" : "0"}, {"DDGI_FINAL", last ? "1" : "0"}};
+      return [=](PassContext& ctx) {
+        gpu::Bindings bind;
+        bind.buffer("DdgiVolume", constants);
+        bindProbesSampled(bind, h);
+        bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
+            .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
+            .storage("outIrradiance", out);
+        if (accumulate) bind.texture("previousSum", previous, gpu::SamplerKind::NearestClamp);
+        ctx.dispatchThreads(ctx.pipelines().compute(shader("gather.comp", defines)), bind,
+                            {gatheredSize.x, gatheredSize.y, 1}, push);
+      };
+    });
+  }
   if (k == 1) return;
   graph.addPass("DDGI.Upsample", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
     const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-    const TextureHandle low = b.read(gathered, Access::Sampled);
+    const TextureHandle low = b.read(sum, Access::Sampled);
     const TextureHandle out = b.write(
         b.createTexture("DDGI.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
         Access::StorageWrite);

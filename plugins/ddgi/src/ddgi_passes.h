@@ -56,11 +56,22 @@ struct VolumeFrame {
   BufferHandle rays;  ///< this update's ray results (debug views), invalid without an update
 };
 
+/// The update passes of one volume; `suffix` follows every pass name (" [Hall]" when a
+/// scene has several volumes, "" for one).
 VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const ProbeTextures& textures,
-                            const ProbeHandles& imported);
-/// DDGI.Gather at 1/k of the view's resolution (k = 1, 2 or 4), and DDGI.Upsample when k > 1.
-void addGatherPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
-                   const VolumeFrame& volume, uint32_t k);
+                            const ProbeHandles& imported, const std::string& suffix);
+/// What a gather pass needs of one volume.
+struct GatherSource {
+  const VolumePlan* plan;
+  VolumeFrame volume;
+  std::string suffix;
+};
+/// DDGI.Gather for every volume at 1/k of the view's resolution (k = 1, 2 or 4), each
+/// adding its weighted irradiance to the previous one's sum; the last normalises (E =
+/// Σ wᵢEᵢ / max(Σ wᵢ, 1): overlapping volumes average, a lone volume's edge fades), then
+/// DDGI.Upsample when k > 1.
+void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::vector<GatherSource>& sources,
+                     uint32_t k);
 /// DDGI.Debug: r.DDGI.DebugMode 2..7 (probe spheres, states, ray hits, atlases) as the
 /// DebugView channel. `probeRadius` is in metres.
 void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,

@@ -210,6 +210,12 @@ void DdgiSettings::declare(PluginContext& ctx) {
        .min = 0,
        .max = kDebugModeCount - 1,
        .category = debug});
+  debugVolume = ctx.addCVar<int32_t>({.name = "r.DDGI.DebugVolume",
+                                      .defaultValue = 0,
+                                      .help = "Which volume the probe and atlas views show (scene order).",
+                                      .min = 0,
+                                      .max = 1023,
+                                      .category = debug});
   debugProbeRadius = ctx.addCVar<float>({.name = "r.DDGI.DebugProbeRadius",
                                          .defaultValue = 0.1f,
                                          .help = "Radius of the debug probe spheres, in probe spacings.",

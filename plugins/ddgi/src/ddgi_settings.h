@@ -35,7 +35,7 @@ struct DdgiSettings {
   // Shading (post-process-volume settings).
   CVarRef<float> intensity, normalBias, viewBias, skyRadiance, lightingPassScale;
   // Debugging.
-  CVarRef<int32_t> debugMode;
+  CVarRef<int32_t> debugMode, debugVolume;
   CVarRef<float> debugProbeRadius;
   // Object parameters.
   ObjectParameter<bool> indirectLighting;  ///< light: "DDGI indirect lighting"

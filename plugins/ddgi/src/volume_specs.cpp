@@ -1,0 +1,72 @@
+#include "volume_specs.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace bounce::ddgi {
+
+std::vector<std::string> volumeFields() {
+  return {"ProbeSpacing", "ProbeCounts", "RaysPerProbe", "Hysteresis",
+          "Intensity",    "NormalBias",  "ViewBias",     "Enabled"};
+}
+
+namespace {
+
+// A number field within [lo, hi]; out of range is a problem, and the setting applies.
+template <class T>
+std::optional<T> ranged(const SceneVolume& v, const char* key, double lo, double hi,
+                        std::vector<std::string>& problems) {
+  const std::optional<double> x = v.number(key);
+  if (!x) return std::nullopt;
+  if (*x < lo || *x > hi) {
+    problems.push_back(fmt::format("DDGIVolume '{}': {} {} is outside {}..{}; using the r.DDGI setting",
+                                   v.name, key, *x, lo, hi));
+    return std::nullopt;
+  }
+  return T(*x);
+}
+
+}  // namespace
+
+std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, uint32_t irradianceTexels,
+                                    uint32_t distanceTexels, std::vector<std::string>& problems) {
+  std::vector<VolumeSpec> specs;
+  for (const SceneVolume* v : scene.volumes(kVolumeKind)) {
+    if (v->flag("Enabled") == false) continue;
+    VolumeSpec s;
+    s.name = v->name.empty() ? fmt::format("volume {}", specs.size()) : v->name;
+    const Aabb box = v->box();
+    if (const std::optional<glm::dvec3> counts = v->triple("ProbeCounts")) {
+      // One cell per probe, each probe at its cell's centre (as fitGrid places them).
+      s.grid.center = box.center();
+      s.grid.counts = glm::ivec3(glm::round(*counts));
+      s.grid.spacing = box.size() / glm::max(glm::vec3(s.grid.counts), glm::vec3(1.0f));
+    } else {
+      const std::optional<double> spacing = v->number("ProbeSpacing");
+      s.grid = fitGrid(box, spacing && *spacing > 0.0 ? float(*spacing) : defaultSpacing);
+    }
+    if (std::string error = s.grid.validate(irradianceTexels, distanceTexels); !error.empty()) {
+      problems.push_back(fmt::format("DDGIVolume '{}': {}; left out", s.name, error));
+      continue;
+    }
+    s.raysPerProbe = ranged<int32_t>(*v, "RaysPerProbe", 32, 1024, problems);
+    s.hysteresis = ranged<float>(*v, "Hysteresis", 0.0, 1.0, problems);
+    s.intensity = ranged<float>(*v, "Intensity", 0.0, 100.0, problems);
+    s.normalBias = ranged<float>(*v, "NormalBias", 0.0, 1.0, problems);
+    s.viewBias = ranged<float>(*v, "ViewBias", 0.0, 1.0, problems);
+    specs.push_back(std::move(s));
+  }
+  if (!specs.empty() || !scene.volumes(kVolumeKind).empty()) return specs;
+  VolumeSpec fitted;
+  fitted.name = "scene bounds";
+  fitted.grid = fitGrid(scene.bounds(), defaultSpacing);
+  if (std::string error = fitted.grid.validate(irradianceTexels, distanceTexels); !error.empty()) {
+    problems.push_back(fmt::format("the volume fitted to the scene: {}; left out", error));
+    return specs;
+  }
+  specs.push_back(std::move(fitted));
+  return specs;
+}
+
+}  // namespace bounce::ddgi

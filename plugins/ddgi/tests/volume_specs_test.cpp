@@ -1,0 +1,69 @@
+// Probe volumes from a scene's DDGIVolume nodes, or fitted to its bounds.
+
+#include "volume_specs.h"
+
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace bounce::ddgi {
+namespace {
+
+SceneVolume volume(const char* name, glm::vec3 centre, glm::vec3 halfSize,
+                   std::map<std::string, SceneVolumeValue> settings) {
+  SceneVolume v;
+  v.kind = kVolumeKind;
+  v.name = name;
+  v.world = glm::scale(glm::translate(glm::mat4(1.0f), centre), halfSize);
+  v.settings = std::move(settings);
+  return v;
+}
+
+TEST(VolumeSpecs, WithoutVolumeNodesOneVolumeFitsTheScene) {
+  Scene scene;
+  std::vector<std::string> problems;
+  const auto specs = volumeSpecs(scene, 0.0f, 8, 10, problems);
+  ASSERT_EQ(specs.size(), 1u);
+  EXPECT_EQ(specs[0].name, "scene bounds");
+  EXPECT_TRUE(problems.empty());
+}
+
+TEST(VolumeSpecs, NodesGiveTheirBoxesCountsSpacingAndOverrides) {
+  Scene scene;
+  scene.addVolume(volume("hall", {0, 2, 0}, {4, 2, 4}, {{"ProbeSpacing", 1.0}, {"Hysteresis", 0.9}}));
+  scene.addVolume(volume("tower", {10, 5, 0}, {1, 5, 1},
+                         {{"ProbeCounts", std::vector<double>{2, 10, 2}}, {"RaysPerProbe", 256.0}}));
+  scene.addVolume(volume("off", {0, 0, 0}, {1, 1, 1}, {{"Enabled", false}}));
+  std::vector<std::string> problems;
+  const auto specs = volumeSpecs(scene, 0.0f, 8, 10, problems);
+  ASSERT_EQ(specs.size(), 2u);
+  EXPECT_EQ(specs[0].name, "hall");
+  EXPECT_EQ(specs[0].grid.counts, glm::ivec3(8, 4, 8));  // 8 × 4 × 8 m at 1 m
+  EXPECT_EQ(specs[0].hysteresis, 0.9f);
+  EXPECT_FALSE(specs[0].raysPerProbe);
+  EXPECT_EQ(specs[1].grid.counts, glm::ivec3(2, 10, 2));
+  EXPECT_FLOAT_EQ(specs[1].grid.spacing.y, 1.0f);  // 10 m / 10 probes, each at its cell's centre
+  EXPECT_EQ(specs[1].raysPerProbe, 256);
+  EXPECT_TRUE(problems.empty());
+}
+
+TEST(VolumeSpecs, UnusableVolumesAreLeftOutWithAReason) {
+  Scene scene;
+  scene.addVolume(volume("flat", {0, 0, 0}, {1, 1, 1}, {{"ProbeCounts", std::vector<double>{1, 4, 4}}}));
+  scene.addVolume(volume("odd", {0, 0, 0}, {1, 1, 1}, {{"Hysteresis", 3.0}}));
+  std::vector<std::string> problems;
+  const auto specs = volumeSpecs(scene, 0.0f, 8, 10, problems);
+  ASSERT_EQ(specs.size(), 1u);  // 'odd' stays, with the r.DDGI hysteresis
+  EXPECT_EQ(specs[0].name, "odd");
+  EXPECT_FALSE(specs[0].hysteresis);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_NE(problems[0].find("'flat'"), std::string::npos) << problems[0];
+  EXPECT_NE(problems[0].find("at least 2"), std::string::npos) << problems[0];
+  EXPECT_NE(problems[1].find("Hysteresis 3 is outside 0..1"), std::string::npos) << problems[1];
+  // Only disabled volumes: no volume at all (no fallback to the scene's bounds).
+  Scene disabled;
+  disabled.addVolume(volume("off", {0, 0, 0}, {1, 1, 1}, {{"Enabled", false}}));
+  EXPECT_TRUE(volumeSpecs(disabled, 0.0f, 8, 10, problems).empty());
+}
+
+}  // namespace
+}  // namespace bounce::ddgi
