@@ -15,6 +15,7 @@
 #include "bounce/engine.h"
 #include "renderer/render_stats.h"
 #include "renderer/renderer.h"
+#include "scene/generated_scenes.h"
 
 #include "bounce-render-bench/bench_variant.h"
 #include "parse_arguments.h"
@@ -127,6 +128,9 @@ int main(int argc, char** argv) {
   uint32_t frames = 10;
   std::vector<std::string> sets, variantTexts;
   app.add_option("--scene", scenePath, "glTF scene");
+  uint32_t generate = 0;
+  app.add_option("--generate", generate,
+                 "Render a generated room with spheres of about this many triangles instead of --scene");
   app.add_option("--gi", technique, "GI technique (default: r.GI.Technique from the ini files)");
   app.add_option("--sizes", sizes, "Square output sizes")->delimiter(',');
   app.add_option("--frames", frames, "Frames per size and variant (the first is not timed)")
@@ -161,10 +165,15 @@ int main(int argc, char** argv) {
   options.keepGoing = keepGoing;
   bounce::Engine engine(std::move(options));
   if (auto status = bounce::app::commandLineFailure(engine, "bounce-render-bench")) return *status;
-  bounce::GltfLoadResult loaded = engine.loadScene(scenePath);
-  if (!engine.scene()) {
-    bounce::app::printError("bounce-render-bench", loaded.error);
-    return 2;
+  if (generate > 0) {
+    engine.setScene(bounce::generated::litRoom(generate));
+    scenePath = fmt::format("generated room ({} triangles)", engine.scene()->triangleCount());
+  } else {
+    bounce::GltfLoadResult loaded = engine.loadScene(scenePath);
+    if (!engine.scene()) {
+      bounce::app::printError("bounce-render-bench", loaded.error);
+      return 2;
+    }
   }
   std::string error;
   auto device = bounce::gpu::Device::create({.preferredDevice = deviceName}, &error);
