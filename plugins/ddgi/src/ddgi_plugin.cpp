@@ -52,6 +52,12 @@ class DdgiPlugin final : public Plugin {
                       "r.DDGI.DebugMode 7", off});
     ctx.addQualityKnob({.cvar = "r.DDGI.RaysPerProbe", .values = {"64", "128", "256"}, .label = "rays"});
     ctx.addQualityKnob({.cvar = "r.DDGI.Hysteresis", .values = {"0.9", "0.97"}, .label = "hysteresis"});
+    // Metres: 0 is automatic (six probes across the scene); the fixed values suit rooms.
+    ctx.addQualityKnob({.cvar = "r.DDGI.ProbeSpacing", .values = {"0.5", "1"}, .label = "spacing"});
+    ctx.addQualityKnob({.cvar = "r.DDGI.DistanceTexels", .values = {"6", "14"}, .label = "distance texels"});
+    ctx.addQualityKnob({.cvar = "r.DDGI.ProbeUpdateBudget", .values = {"64"}, .label = "budget"});
+    ctx.addQualityKnob(
+        {.cvar = "r.DDGI.LightingPassScale", .values = {"1", "0.25"}, .label = "gather scale"});
     ctx.addConsoleCommand({.name = "ddgi.Status",
                            .help = "Prints the probe volume, its memory and the last update.",
                            .run = [this](const std::vector<std::string>&) { return status(); }});
