@@ -73,6 +73,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
       b.condition([] { return PassDecision::run("new probe textures"); });
       const ProbeHandles h = out.probes;
       const std::vector<std::pair<std::string, std::string>> defines = {
+          {"DDGI_SCROLL_CLEAR", "0"},
           {"DDGI_IRRADIANCE_FORMAT", textures.irradianceQualifier()},
           {"DDGI_DISTANCE_FORMAT", textures.distanceQualifier()}};
       const glm::uvec3 irr = atlasExtent(plan.grid, plan.format.irradianceTexels());
@@ -84,6 +85,38 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
             .storage("distanceAtlas", h.distance)
             .storage("probeData", h.probeData);
         ctx.dispatchThreads(ctx.pipelines().compute(shader("reset.comp", defines)), bind, extent);
+      };
+    });
+  }
+
+  if (!plan.reset && plan.scrolled != glm::ivec3(0)) {
+    graph.addPass("DDGI.ScrollClear" + suffix, Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      const BufferHandle volume = b.read(out.constants, Access::StorageRead);
+      out.probes.irradiance = b.write(out.probes.irradiance, Access::StorageReadWrite);
+      out.probes.distance = b.write(out.probes.distance, Access::StorageReadWrite);
+      out.probes.probeData = b.write(out.probes.probeData, Access::StorageReadWrite);
+      const glm::ivec3 moved = plan.scrolled;
+      b.condition([moved] {
+        return PassDecision::run(
+            fmt::format("the volume followed the camera by ({}, {}, {}) probes", moved.x, moved.y, moved.z));
+      });
+      const ProbeHandles h = out.probes;
+      const uint32_t texels = std::max(plan.format.irradianceTexels(), plan.format.distanceTexels());
+      const std::vector<std::pair<std::string, std::string>> defines = {
+          {"DDGI_SCROLL_CLEAR", "1"},
+          {"DDGI_TEXELS", std::to_string(texels)},
+          {"DDGI_IRRADIANCE_FORMAT", textures.irradianceQualifier()},
+          {"DDGI_DISTANCE_FORMAT", textures.distanceQualifier()}};
+      const uint32_t probeCount = plan.grid.probeCount();
+      const glm::ivec4 push(moved, 0);
+      return [=](PassContext& ctx) {
+        gpu::Bindings bind;
+        bind.buffer("DdgiVolume", volume)
+            .storage("irradianceAtlas", h.irradiance)
+            .storage("distanceAtlas", h.distance)
+            .storage("probeData", h.probeData);
+        ctx.dispatchThreads(ctx.pipelines().compute(shader("reset.comp", defines)), bind,
+                            {probeCount * texels, texels, 1}, push);
       };
     });
   }

@@ -28,8 +28,9 @@ struct VolumeConstants {
   glm::vec4 blend{0.0f};
   glm::vec4 bias{0.0f};
   glm::vec4 misc{0.0f};
+  glm::ivec4 scroll{0};  ///< xyz: a camera-following volume's scroll, in probes
 };
-static_assert(sizeof(VolumeConstants) == 128);
+static_assert(sizeof(VolumeConstants) == 144);
 
 inline constexpr uint32_t kFlagRelocation = 1, kFlagClassification = 2, kFlagInfiniteBounce = 4;
 
@@ -41,9 +42,10 @@ struct VolumePlan {
   std::vector<glm::vec4> directions;  ///< this update's ray directions (fixed rays first)
   std::vector<uint32_t> lightMask;    ///< bit i: light i bounces through DDGI
   bool reset = false;                 ///< the textures are new: clear them first
-  bool lit = false;                   ///< anything to bounce (flagged light, emission or sky)
-  std::string litReason;              ///< why (or why not), for the frame report
-  bool update = false;                ///< trace and blend this frame
+  glm::ivec3 scrolled{0};  ///< a camera-following volume moved this many probes: clear the new ones
+  bool lit = false;        ///< anything to bounce (flagged light, emission or sky)
+  std::string litReason;   ///< why (or why not), for the frame report
+  bool update = false;     ///< trace and blend this frame
   std::string updateReason;
   uint32_t probesUpdated() const { return constants.update.y; }
   uint32_t raysPerProbe() const { return constants.texels.z; }

@@ -74,10 +74,29 @@ VolumePlan ProbeVolume::plan(const FrameContext& frame, const VolumeSpec& spec, 
   plan.lit = lighting.lit;
   plan.litReason = lighting.reason;
 
+  // A camera-following volume moves in whole spacings from where its node puts it.
+  glm::ivec3 cell(0);
+  if (spec.followCamera) {
+    cell = glm::ivec3(glm::round((frame.view.position - spec.grid.center) / spec.grid.spacing));
+    plan.grid.center = spec.grid.center + glm::vec3(cell) * spec.grid.spacing;
+  }
   plan.reset = textures_.configure(plan.grid, plan.format);
-  // A moved or re-spaced grid holds the old positions' light: start again.
-  if (!plan.reset && (plan.grid.center != grid_.center || plan.grid.spacing != grid_.spacing))
+  const bool sameCells = plan.grid.spacing == grid_.spacing && plan.grid.counts == grid_.counts;
+  const glm::ivec3 moved = cell - cameraCell_;
+  if (spec.followCamera && !plan.reset && sameCells && moved != glm::ivec3(0)) {
+    // Scrolled: probes that stay keep their texels; the planes it entered are cleared.
+    if (glm::any(glm::greaterThanEqual(glm::abs(moved), plan.grid.counts))) {
+      plan.reset = true;  // moved past all of them
+    } else {
+      scroll_ = (scroll_ + moved) % plan.grid.counts;
+      plan.scrolled = moved;
+    }
+  } else if (!plan.reset && (plan.grid.center != grid_.center || !sameCells)) {
+    // A moved or re-spaced grid holds the old positions' light: start again.
     plan.reset = true;
+  }
+  if (plan.reset) scroll_ = glm::ivec3(0);
+  cameraCell_ = cell;
   const int32_t seed = settings.seed.get();
   if (plan.reset || seed != seed_) {
     rotations_.reseed(uint32_t(seed));
@@ -112,10 +131,12 @@ VolumePlan ProbeVolume::plan(const FrameContext& frame, const VolumeSpec& spec, 
                 settings.minFrontfaceDistance.get() * minSpacing, settings.randomRayBackfaceThreshold.get());
   c.misc = glm::vec4(settings.fixedRayBackfaceThreshold.get(), settings.encodingGamma.get(),
                      spec.intensity.value_or(frame.setting(settings.intensity)), settings.skyRadiance.get());
+  c.scroll = glm::ivec4(scroll_, 0);
 
   // Updates stop once a static scene's probes have converged; any change restarts them.
   const uint64_t key = contentKey(frame, c);
-  if (plan.reset || key != contentKey_) framesSinceChange_ = 0;
+  // A scroll brings in probes with nothing yet: they need their updates.
+  if (plan.reset || key != contentKey_ || plan.scrolled != glm::ivec3(0)) framesSinceChange_ = 0;
   contentKey_ = key;
   // A brightness threshold below 1 (gamma-encoded luminance) can damp ordinary steps.
   const uint64_t needed =

@@ -48,6 +48,8 @@ class ProbeVolume {
   uint64_t updates_ = 0;
   uint64_t contentKey_ = 0;
   uint64_t framesSinceChange_ = 0;
+  glm::ivec3 cameraCell_{0};  ///< a camera-following volume's offset from its node, in spacings
+  glm::ivec3 scroll_{0};      ///< where grid coordinate 0 is stored (ddgiStorageCoords)
   std::string lastUpdate_ = "not rendered yet";
 };
 

@@ -7,8 +7,8 @@
 namespace bounce::ddgi {
 
 std::vector<std::string> volumeFields() {
-  return {"ProbeSpacing", "ProbeCounts", "RaysPerProbe", "Hysteresis",
-          "Intensity",    "NormalBias",  "ViewBias",     "Enabled"};
+  return {"ProbeSpacing", "ProbeCounts", "RaysPerProbe", "Hysteresis",  "Intensity",
+          "NormalBias",   "ViewBias",    "Enabled",      "FollowCamera"};
 }
 
 namespace {
@@ -55,6 +55,7 @@ std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, ui
     s.intensity = ranged<float>(*v, "Intensity", 0.0, 100.0, problems);
     s.normalBias = ranged<float>(*v, "NormalBias", 0.0, 1.0, problems);
     s.viewBias = ranged<float>(*v, "ViewBias", 0.0, 1.0, problems);
+    s.followCamera = v->flag("FollowCamera").value_or(false);
     specs.push_back(std::move(s));
   }
   if (!specs.empty() || !scene.volumes(kVolumeKind).empty()) return specs;

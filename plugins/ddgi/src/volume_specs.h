@@ -7,7 +7,11 @@
 //   "extras": { "DDGIVolume": { "ProbeSpacing": 1.5 } }                 spacing, metres
 //   "extras": { "DDGIVolume": { "ProbeCounts": [8, 4, 8], "RaysPerProbe": 256,
 //                               "Hysteresis": 0.95, "Intensity": 1.2, "NormalBias": 0.05,
-//                               "ViewBias": 0.2, "Enabled": true } }
+//                               "ViewBias": 0.2, "Enabled": true, "FollowCamera": false } }
+//
+// FollowCamera: the box keeps its size and moves with the camera in whole probe spacings;
+// probes keep their data as it moves and only the planes it enters start afresh (RTXGI's
+// infinite scrolling).
 
 #include "probe_grid.h"
 
@@ -28,6 +32,7 @@ struct VolumeSpec {
   ProbeGrid grid;
   std::optional<int32_t> raysPerProbe;
   std::optional<float> hysteresis, intensity, normalBias, viewBias;
+  bool followCamera = false;  ///< grid centred on the camera, snapped to whole spacings
 };
 
 /// The scene's volumes. `defaultSpacing` is r.DDGI.ProbeSpacing (0: automatic). A volume

@@ -23,6 +23,7 @@ layout(std430, binding = DDGI_VOLUME_BINDING) readonly buffer DdgiVolume {
   vec4 ddgiBlend;       // x: hysteresis, y: irradiance threshold, z: brightness threshold, w: distance exponent
   vec4 ddgiBias;        // x: normal bias (m), y: view bias (m), z: min front-face distance (m), w: random-ray backface threshold
   vec4 ddgiMisc;        // x: fixed-ray backface threshold, y: irradiance encoding gamma, z: intensity, w: sky radiance
+  ivec4 ddgiScroll;     // xyz: how far a camera-following volume has scrolled, in probes (storage = grid + scroll, wrapped)
   vec4 ddgiRayDirections[];  // per ray of this update, unit length (the fixed rays first)
 };
 
@@ -46,11 +47,25 @@ uint ddgiProbeIndex(ivec3 c) { return uint(c.x + ddgiCounts.x * c.z + ddgiCounts
 
 vec3 ddgiProbeRestPosition(ivec3 c) { return ddgiFirstProbe.xyz + ddgiSpacing.xyz * vec3(c); }
 
-// The probe-data texel of a probe: (x, z) in layer y.
-ivec3 ddgiProbeDataTexel(ivec3 c) { return ivec3(c.x, c.z, c.y); }
+// Where probe c (grid coordinates) keeps its data: a scrolled volume's probes keep their
+// textures' texels as the grid moves, so storage is the grid coordinate plus the scroll,
+// wrapped around (RTXGI's infinite scrolling). 0 scroll: the same coordinates.
+ivec3 ddgiStorageCoords(ivec3 c) {
+  ivec3 s = (c + ddgiScroll.xyz) % ddgiCounts.xyz;
+  return s + ddgiCounts.xyz * ivec3(lessThan(s, ivec3(0)));
+}
+
+// The probe-data texel of a probe: (x, z) in layer y of its storage coordinates.
+ivec3 ddgiProbeDataTexel(ivec3 c) {
+  ivec3 s = ddgiStorageCoords(c);
+  return ivec3(s.x, s.z, s.y);
+}
 
 // The top-left texel of a probe's T×T block in an atlas, and its layer.
-ivec3 ddgiProbeBlock(ivec3 c, uint texelsPerProbe) { return ivec3(c.x * int(texelsPerProbe), c.z * int(texelsPerProbe), c.y); }
+ivec3 ddgiProbeBlock(ivec3 c, uint texelsPerProbe) {
+  ivec3 s = ddgiStorageCoords(c);
+  return ivec3(s.x * int(texelsPerProbe), s.z * int(texelsPerProbe), s.y);
+}
 
 float ddgiSignNotZero(float v) { return v >= 0.0 ? 1.0 : -1.0; }
 vec2 ddgiSignNotZero(vec2 v) { return vec2(ddgiSignNotZero(v.x), ddgiSignNotZero(v.y)); }
@@ -94,7 +109,8 @@ uvec2 ddgiBorderSource(uvec2 t, uint T) {
 
 // Normalised atlas coordinates of direction `d` in probe `c`'s map (T texels per side,
 // atlas of counts.x·T × counts.z·T texels).
-vec3 ddgiProbeUV(ivec3 c, vec3 d, uint T) {
+vec3 ddgiProbeUV(ivec3 grid, vec3 d, uint T) {
+  ivec3 c = ddgiStorageCoords(grid);
   vec2 o = ddgiOctahedralCoordinates(d);
   vec2 texel = vec2(c.x * int(T), c.z * int(T)) + 0.5 * float(T) + o * 0.5 * float(T - 2u);
   return vec3(texel / vec2(ddgiCounts.x * int(T), ddgiCounts.z * int(T)), float(c.y));
