@@ -13,10 +13,10 @@ namespace bounce::bench {
 
 /// A technique with some of its quality knobs set away from their defaults.
 struct Configuration {
-  std::string technique;  ///< plugin name, e.g. "VXGI"; "Reference" is the path tracer
+  std::string technique;  ///< plugin name, e.g. "MyGI"; "Reference" is the path tracer
   std::vector<std::pair<std::string, std::string>> settings;  ///< console variable → value
   bool isDefault = false;  ///< the technique's own defaults (no settings changed)
-  std::string label;       ///< e.g. "VXGI cones=16" (knob labels, as declared)
+  std::string label;       ///< e.g. "MyGI cones=16" (knob labels, as declared)
 };
 
 struct Measurement {
@@ -48,7 +48,7 @@ struct Report {
   double referenceSeconds = 0;  ///< how long the cached reference took to render
   uint32_t timedFrames = 0;
   std::vector<Measurement> measurements;
-  std::vector<std::string> notes;  ///< e.g. "VXGI's defaults are not on its Pareto front: ..."
+  std::vector<std::string> notes;  ///< e.g. "MyGI's defaults are not on its Pareto front: ..."
 };
 
 /// Marks each measurement on its technique's Pareto front (minimal totalMs and

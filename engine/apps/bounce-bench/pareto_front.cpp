@@ -26,7 +26,7 @@ void markParetoFronts(std::vector<Measurement>& measurements) {
     m.onParetoFront = comparable(m);
     if (!m.onParetoFront) continue;
     for (const Measurement& other : measurements) {
-      // Plugin names are case-insensitive, so "vxgi" and "VXGI" are one technique.
+      // Plugin names are case-insensitive, so "mygi" and "MyGI" are one technique.
       if (&other == &m || !comparable(other) || !equalsIgnoreCase(other.config.technique, m.config.technique))
         continue;
       if (dominates(other, m)) {

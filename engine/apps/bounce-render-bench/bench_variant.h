@@ -1,7 +1,7 @@
 #pragma once
 // A benchmark variant: a labelled set of console-variable values measured as one column
 // of bounce-render-bench's table, then restored, so several settings are compared in one
-// run ("static: " against "dynamic: r.VXGI.ForceFullVoxelization=1").
+// run ("static: " against "dynamic: r.MyGI.ForceFullUpdate=1").
 
 #include "bounce/config/cvar_registry.h"
 

@@ -12,7 +12,7 @@
 namespace bounce {
 
 struct QualityKnobDesc {
-  std::string cvar;                 ///< e.g. "r.VXGI.DiffuseCones"
+  std::string cvar;                 ///< e.g. "r.MyGI.Cones"
   std::vector<std::string> values;  ///< swept values, e.g. {"4", "8", "16"}
   std::string label;                ///< short column name, e.g. "cones"
 };

@@ -79,7 +79,7 @@ class PluginContext {
   }
 
   /// A kind of scene volume: glTF nodes whose extras hold an object under `desc.name`
-  /// load as SceneVolume entries of Scene::volumes() (e.g. "DDGIVolume").
+  /// load as SceneVolume entries of Scene::volumes() (e.g. "ProbeVolume").
   void addSceneVolumeKind(SceneVolumeKindDesc desc) { services_.volumeKinds.add(std::move(desc), owner_); }
 
   /// Read access to engine state.

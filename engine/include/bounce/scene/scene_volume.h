@@ -4,7 +4,7 @@
 // node's world transform applied to the cube [-1,1]³, as for post-process volumes; the
 // object's members are kept as written, for the plugin to read.
 //
-//   { "name": "Hall", "scale": [5, 2, 8], "extras": { "DDGIVolume": { "ProbeSpacing": 1.5 } } }
+//   { "name": "Hall", "scale": [5, 2, 8], "extras": { "ProbeVolume": { "ProbeSpacing": 1.5 } } }
 
 #include "bounce/core/owner.h"
 #include "bounce/scene/aabb.h"
@@ -24,7 +24,7 @@ namespace bounce {
 using SceneVolumeValue = std::variant<bool, double, std::string, std::vector<double>>;
 
 struct SceneVolume {
-  std::string kind;  ///< the extras key, e.g. "DDGIVolume"
+  std::string kind;  ///< the extras key, e.g. "ProbeVolume"
   std::string name;  ///< the node's name
   glm::mat4 world{1.0f};
   std::map<std::string, SceneVolumeValue> settings;
