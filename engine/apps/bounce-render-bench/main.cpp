@@ -11,6 +11,7 @@
 // Passes named NAME.L<n> (one per level of a multi-level structure) are summed into one
 // NAME.L* row (--per-level shows each).
 
+#include "bounce-render-bench/light_move_convergence.h"
 #include "bounce/core/log.h"
 #include "bounce/engine.h"
 #include "renderer/render_stats.h"
@@ -139,6 +140,14 @@ int main(int argc, char** argv) {
   app.add_option("--variant", variantTexts,
                  "\"LABEL: CVAR=VALUE ...\": settings measured as one column, restored afterwards "
                  "(repeatable; the first is the base of the ratios)");
+  float lightMove = 0.0f;
+  uint32_t lightMoveFrames = 300;
+  app.add_option(
+      "--light-move", lightMove,
+      "Afterwards, move the first light this many metres along +x and report the frames and GPU ms until "
+      "the indirect irradiance settles (within 5% and 2% relative RMSE of where it ends)");
+  app.add_option("--light-move-frames", lightMoveFrames, "Frames rendered after the move (default 300)")
+      ->check(CLI::Range(10u, 100000u));
   bool perLevel = false;
   app.add_flag("--per-level", perLevel, "One row per NAME.L<n> pass instead of one NAME.L* sum per family");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
@@ -223,6 +232,24 @@ int main(int argc, char** argv) {
 
   fmt::print("{}, scene {}, GI {}: GPU ms per pass, median of {} frames\n\n", device->name(), scenePath,
              engine.technique(), frames - 1);
+  if (lightMove != 0.0f) {
+    const bounce::FrameView view = bounce::FrameView::fromCamera(camera, sizes.front(), sizes.front());
+    const bounce::LightMoveConvergence c = bounce::measureLightMoveConvergence(
+        engine, renderer, view, glm::vec3(lightMove, 0.0f, 0.0f), lightMoveFrames, lightMoveFrames);
+    if (!c.error.empty()) {
+      bounce::app::printError("bounce-render-bench", c.error);
+      return 2;
+    }
+    auto cell = [](uint32_t f, double ms) {
+      return f == 0 ? std::string("not within the frames run")
+                    : fmt::format("{} frames, {:.0f} GPU ms", f, ms);
+    };
+    fmt::print("After the first light moves {} m along +x ({}², {} frames before and after the move):\n",
+               lightMove, sizes.front(), lightMoveFrames);
+    fmt::print("  within 5% relative RMSE of the settled indirect irradiance: {}\n",
+               cell(c.framesTo5, c.msTo5));
+    fmt::print("  within 2%: {}\n\n", cell(c.framesTo2, c.msTo2));
+  }
   if (variants.size() == 1) {
     std::vector<std::string> columns;
     std::vector<const Measurement*> cells;

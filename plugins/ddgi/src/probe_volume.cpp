@@ -149,10 +149,11 @@ VolumePlan ProbeVolume::plan(const FrameContext& frame, const VolumeSpec& spec, 
         "converged: nothing changed for {} frames (scene, r.DDGI settings); a change restarts the updates",
         framesSinceChange_);
   else if (plan.reset)
-    plan.updateReason = "first update of new probes";
+    plan.updateReason =
+        fmt::format("first update of new probes: {} of {} probes", range.count, plan.grid.probeCount());
   else
-    plan.updateReason = fmt::format("update {} of {} probes ({} of {} frames to converge)", updates_ + 1,
-                                    range.count, framesSinceChange_ + 1, needed);
+    plan.updateReason = fmt::format("update {}: {} of {} probes ({} of {} frames to converge)", updates_ + 1,
+                                    range.count, plan.grid.probeCount(), framesSinceChange_ + 1, needed);
   if (plan.update) {
     plan.directions = probeRayDirections(rays, fixed, rotations_.next());
     ++updates_;

@@ -361,6 +361,61 @@ TEST_F(DdgiHardCases, AProbeInsideGeometryIsMovedOutThroughTheNearestFace) {
   EXPECT_EQ(off, 0);
 }
 
+TEST_F(DdgiHardCases, ClassificationSwitchesOffAProbeInsideGeometry) {
+  // H6 with classification: the probe inside the box sees backfaces on all its fixed rays
+  // (over the 25% threshold), so it becomes inactive — red in the probe-states view, where
+  // its 10 cm sphere pokes through the box's face 5 cm away — and sampling skips it. With
+  // classification off the same sphere is green (active). Relocation off in both.
+  auto middle = [&](bool classification) {
+    start("content/tests/emissive_quad.gltf",
+          {"r.DDGI.ProbeSpacing=1", "r.DDGI.Hysteresis=0.5", "r.Bloom.Intensity=0", "r.DDGI.Relocation=0",
+           fmt::format("r.DDGI.Classification={}", classification ? 1 : 0)},
+          "DDGI");
+    engine->setScene(probeInsideBoxScene());
+    for (int i = 0; i < 4; ++i) {
+      const ImageBuffer e = render(32, 32, {"indirect-irradiance"}).images.at("indirect-irradiance");
+      EXPECT_TRUE(channelStats(e, 0).finite && channelStats(e, 1).finite && channelStats(e, 2).finite);
+    }
+    engine->console().execute("r.DDGI.DebugProbeRadius 0.1");
+    engine->console().execute("r.DDGI.DebugMode 4");
+    const ImageBuffer shown = render(64, 64, {}, true).images.at("display");
+    finish();
+    glm::dvec3 mean(0.0);
+    for (uint32_t y = 30; y < 34; ++y)
+      for (uint32_t x = 30; x < 34; ++x)
+        for (int c = 0; c < 3; ++c) mean[c] += shown.at(x, y, uint32_t(c)) / 16.0;
+    return mean;
+  };
+  const glm::dvec3 on = middle(true), off = middle(false);
+  std::printf(
+      "probe-states view at the enclosed probe: (%.3f, %.3f, %.3f) classified, (%.3f, %.3f, %.3f) not\n",
+      on.x, on.y, on.z, off.x, off.y, off.z);
+  EXPECT_GT(on.x, 2.0 * on.y) << "red: inactive";
+  EXPECT_GT(off.y, 2.0 * off.x) << "green: active";
+}
+
+TEST_F(DdgiHardCases, AnUpdateBudgetUpdatesProbesRoundRobin) {
+  // r.DDGI.ProbeUpdateBudget 27 of the furnace's 216 probes: each frame traces 27 probes'
+  // rays (the report says so), and after 8 frames every probe has been updated once, so
+  // every pixel is lit; after the first frame most probes still hold nothing.
+  start("content/tests/white_furnace.gltf",
+        {"r.DDGI.ProbeUpdateBudget=27", "r.DDGI.Hysteresis=0", "r.DDGI.LightingPassScale=1",
+         "r.Bloom.Intensity=0"},
+        "DDGI");
+  RenderedFrame f = render(24, 24, {"indirect-irradiance"});
+  std::string reason;
+  for (const CompiledPass& p : f.graph.passes)
+    if (p.name == "DDGI.Trace") reason = p.reason;
+  EXPECT_NE(reason.find("27 of 216 probes"), std::string::npos) << reason;
+  const ChannelStats first = channelStats(f.images.at("indirect-irradiance"), 1);
+  for (int i = 0; i < 7; ++i) f = render(24, 24, {"indirect-irradiance"});
+  const ChannelStats eighth = channelStats(f.images.at("indirect-irradiance"), 1);
+  std::printf("budget 27 of 216: E after 1 frame mean %.3f min %.3f; after 8 frames mean %.3f min %.3f\n",
+              first.mean, first.min, eighth.mean, eighth.min);
+  EXPECT_LT(first.mean, 0.5 * eighth.mean);
+  EXPECT_GT(eighth.min, 0.9 * kPi);  // every probe holds at least the first bounce, π Le
+}
+
 // Two closed 2 m rooms side by side along x, sharing a wall `wall` thick; 10 cm slabs
 // elsewhere; a point light in the left room only.
 std::unique_ptr<Scene> twoRoomsScene(float wall) {
