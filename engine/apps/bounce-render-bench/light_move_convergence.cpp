@@ -3,6 +3,7 @@
 #include "bounce/image/image_buffer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace bounce {
@@ -44,8 +45,26 @@ LightMoveConvergence measureLightMoveConvergence(Engine& engine, Renderer& rende
   std::fill(settled.pixels.begin(), settled.pixels.end(), 0.0f);
   for (size_t i = images.size() - tail; i < images.size(); ++i)
     for (size_t p = 0; p < settled.pixels.size(); ++p) settled.pixels[p] += images[i].pixels[p] / float(tail);
+  // Frames averaged over a window of 8 (the window's lag, 3.5 frames, is reported with
+  // the count) against the settled image, less the averaged frames' own noise: what a
+  // settled technique still shows from window to window (the tail's RMSE against its mean)
+  // comes off in quadrature, so the error is how far the light itself still has to go.
+  const size_t window = std::min<size_t>(8, tail);
+  std::vector<ImageBuffer> averaged(images.size(), settled);
+  for (size_t i = 0; i < images.size(); ++i) {
+    const size_t from = i + 1 >= window ? i + 1 - window : 0;
+    std::fill(averaged[i].pixels.begin(), averaged[i].pixels.end(), 0.0f);
+    for (size_t j = from; j <= i; ++j)
+      for (size_t p = 0; p < settled.pixels.size(); ++p)
+        averaged[i].pixels[p] += images[j].pixels[p] / float(i + 1 - from);
+  }
+  std::vector<double> rmse(images.size());
+  for (size_t i = 0; i < images.size(); ++i) rmse[i] = compareImages(averaged[i], settled).relativeRmse;
+  double noise2 = 0.0;
+  for (size_t i = images.size() - tail; i < images.size(); ++i) noise2 = std::max(noise2, rmse[i] * rmse[i]);
   std::vector<double> error(images.size());
-  for (size_t i = 0; i < images.size(); ++i) error[i] = compareImages(images[i], settled).relativeRmse;
+  for (size_t i = 0; i < images.size(); ++i) error[i] = std::sqrt(std::max(0.0, rmse[i] * rmse[i] - noise2));
+  out.noise = std::sqrt(noise2);
   // The first frame after which the error stays under the bound, within the frames before the tail.
   auto settle = [&](double bound, uint32_t& framesTo, double& msTo) {
     const size_t last = images.size() - tail;
