@@ -3,6 +3,7 @@
 #include "probe_grid.h"
 #include "convergence.h"
 #include "probe_rays.h"
+#include "probe_textures.h"
 
 #include <gtest/gtest.h>
 
@@ -79,6 +80,23 @@ TEST(ProbeFormat, BytesPerProbeFollowTheFormula) {
   seed.distanceInterior = 14;
   seed.irradianceStorage = IrradianceStorage::Compact;
   EXPECT_EQ(seed.bytesPerProbe() - ProbeFormat::kProbeDataBytes, 1168u);
+}
+
+TEST(ProbeFormat, TheTexturesHoldExactlyTheFormulaPerProbe) {
+  ProbeGrid g;
+  g.counts = {5, 3, 4};
+  for (const IrradianceStorage storage :
+       {IrradianceStorage::Float32, IrradianceStorage::Float16, IrradianceStorage::Compact})
+    for (const bool wide : {false, true}) {
+      ProbeFormat f;
+      f.irradianceStorage = storage;
+      f.distanceInterior = 14;
+      f.wideDistance = wide;
+      ProbeTextures t;
+      EXPECT_TRUE(t.configure(g, f));
+      EXPECT_EQ(t.bytes(), uint64_t(g.probeCount()) * f.bytesPerProbe()) << int(storage) << wide;
+      EXPECT_FALSE(t.configure(g, f)) << "the same format keeps the textures";
+    }
 }
 
 TEST(ProbeFormat, LargeCellsNeedThirtyTwoBitDistances) {
