@@ -5,6 +5,12 @@ namespace bounce::ddgi {
 void DdgiSettings::declare(PluginContext& ctx) {
   const std::string probes = "DDGI|Probes", blend = "DDGI|Blending", shading = "DDGI|Shading",
                     debug = "DDGI|Debug";
+  enable = ctx.addCVar<bool>({.name = "r.DDGI.Enable",
+                              .defaultValue = true,
+                              .help = "0 culls every DDGI pass (the image is then the one without GI).",
+                              .aliases = {"r.RTXGI.DDGI"},
+                              .ini = {"DDGI", "Enable"},
+                              .category = probes});
   probeSpacing = ctx.addCVar<float>(
       {.name = "r.DDGI.ProbeSpacing",
        .defaultValue = 0.0f,

@@ -25,6 +25,7 @@ enum class DebugMode : int32_t {
 inline constexpr int32_t kDebugModeCount = 8;
 
 struct DdgiSettings {
+  CVarRef<bool> enable;  ///< r.DDGI.Enable (RTXGI-UE: r.RTXGI.DDGI)
   // Probe grid and update.
   CVarRef<float> probeSpacing;  ///< metres; 0 = automatic (fitGrid)
   CVarRef<int32_t> raysPerProbe, updateBudget, irradianceTexels, distanceTexels, irradianceFormat, seed;

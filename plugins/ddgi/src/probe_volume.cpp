@@ -30,6 +30,10 @@ Lighting decideLighting(const Scene& scene, const DdgiSettings& settings) {
         glm::vec3(material.baseColorFactor) * (1.0f - std::clamp(material.metallicFactor, 0.0f, 1.0f));
     l.maxAlbedo = std::max({l.maxAlbedo, c.r, c.g, c.b});
   }
+  if (!settings.enable.get()) {
+    l.reason = "r.DDGI.Enable is 0";
+    return l;
+  }
   const float sky = settings.skyRadiance.get();
   l.lit = flagged > 0 || emissive > 0 || sky > 0.0f;
   l.reason = l.lit ? fmt::format("{} lights with DDGI indirect lighting, {} emissive materials{}", flagged,

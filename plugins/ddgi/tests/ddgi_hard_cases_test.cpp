@@ -181,6 +181,21 @@ TEST_F(DdgiHardCases, NothingToBounceCullsEveryPassAndMatchesNoGi) {
   for (size_t i = 0; i < none.pixels.size(); ++i) ASSERT_EQ(withDdgi.pixels[i], none.pixels[i]) << i;
 }
 
+TEST_F(DdgiHardCases, DisablingCullsEveryPassUnderEitherName) {
+  // r.DDGI.Enable 0, or its RTXGI-UE name r.RTXGI.DDGI 0: every DDGI pass culled with the
+  // reason; back on, they run again.
+  start("content/cornell_box.gltf", {"r.RTXGI.DDGI=0", "r.Bloom.Intensity=0"}, "DDGI");
+  RenderedFrame f = render(16, 16, {});
+  EXPECT_FALSE(f.graph.executed("DDGI.Trace"));
+  EXPECT_FALSE(f.graph.executed("DDGI.Gather"));
+  for (const CompiledPass& p : f.graph.passes)
+    if (p.name == "DDGI.Gather") {
+      EXPECT_NE(p.reason.find("r.DDGI.Enable is 0"), std::string::npos) << p.reason;
+    }
+  engine->console().execute("r.DDGI.Enable 1");
+  EXPECT_TRUE(render(16, 16, {}).graph.executed("DDGI.Trace"));
+}
+
 TEST_F(DdgiHardCases, ALightSwitchedOffReachesExactlyZero) {
   // H4: converge with the light on, then set its intensity to 0 (still flagged): the
   // darkening step of at least 1/1024 per update takes every stored value to exactly 0,
