@@ -18,6 +18,16 @@ constexpr double kPi = 3.14159265358979;
 
 class DdgiHardCases : public RenderFixture {};
 
+/// A grey Lambert material (no specular lobe) of albedo `rho`, added to `scene`.
+uint32_t addLambert(Scene& scene, const char* name, float rho) {
+  Material m;
+  m.name = name;
+  m.baseColorFactor = glm::vec4(glm::vec3(rho), 1.0f);
+  m.metallicFactor = 0.0f;
+  m.specularFactor = 0.0f;
+  return scene.addMaterial(m);
+}
+
 TEST_F(DdgiHardCases, ClosedFurnaceConvergesAlongTheGeometricSeries) {
   // H1: a closed room, every surface albedo ρ = 0.5 and emission Le = 1, no lights. Physics:
   // E = πLe/(1−ρ) = 2π everywhere. With hysteresis 0 and the brightness clamp off each
@@ -252,12 +262,7 @@ TEST_F(DdgiHardCases, OpenWhiteFurnaceShowsTheSkyOnEverySurface) {
   // down by up to 6.6% (mean 0.3%); classified inactive, they are skipped and every pixel
   // reads π to FP16 rounding (measured).
   auto scene = std::make_unique<Scene>();
-  Material white;
-  white.name = "white";
-  white.baseColorFactor = glm::vec4(1.0f);
-  white.metallicFactor = 0.0f;
-  white.specularFactor = 0.0f;
-  const uint32_t m = scene->addMaterial(white);
+  const uint32_t m = addLambert(*scene, "white", 1.0f);
   scene->addInstance({.name = "floor",
                       .mesh = scene->addMesh(generated::box({6.0f, 0.2f, 6.0f}, false, m, "floor")),
                       .world = glm::translate(glm::mat4(1.0f), {0.0f, -0.1f, 0.0f})});
@@ -357,11 +362,7 @@ TEST_F(DdgiHardCases, UpdatesStopWhenConvergedAndAChangeRestartsThem) {
 // the probe from 0.7 m, between two probe planes.
 std::unique_ptr<Scene> probeInsideBoxScene() {
   auto s = std::make_unique<Scene>();
-  Material white;
-  white.name = "white";
-  white.baseColorFactor = glm::vec4(0.7f, 0.7f, 0.7f, 1.0f);
-  white.metallicFactor = 0.0f;
-  const uint32_t m = s->addMaterial(white);
+  const uint32_t m = addLambert(*s, "white", 0.7f);
   s->addInstance({.name = "room",
                   .mesh = s->addMesh(generated::box(glm::vec3(4.0f), true, m, "room")),
                   .world = glm::translate(glm::mat4(1.0f), {0.0f, 2.0f, 0.0f})});
@@ -483,11 +484,7 @@ TEST_F(DdgiHardCases, AnUpdateBudgetUpdatesProbesRoundRobin) {
 // elsewhere; a point light in the left room only.
 std::unique_ptr<Scene> twoRoomsScene(float wall) {
   auto s = std::make_unique<Scene>();
-  Material grey;
-  grey.name = "wall";
-  grey.baseColorFactor = glm::vec4(0.73f, 0.73f, 0.73f, 1.0f);
-  grey.metallicFactor = 0.0f;
-  const uint32_t m = s->addMaterial(grey);
+  const uint32_t m = addLambert(*s, "wall", 0.73f);
   const float t = 0.1f, half = wall * 0.5f, outer = 2.0f + half;
   auto slab = [&](const char* name, glm::vec3 size, glm::vec3 centre) {
     s->addInstance({.name = name,
@@ -515,7 +512,7 @@ TEST_F(DdgiHardCases, LeakThroughAWallFallsWithItsThickness) {
   // H5: the dark room's floor within one probe spacing (0.5 m) of the shared wall, against
   // the lit room's mirror-image floor band, for walls of 0.05 to 1 spacing. Physically 0
   // (the reference path tracer's too, so the note's "≤ 2× the reference" becomes a bound on
-  // the fraction). Measured: 1.95% at 0.05 spacing, 0.80% at 0.1, below 0.003% from 0.25 on:
+  // the fraction). Measured: 1.28% at 0.05 spacing, 0.73% at 0.1, below 0.003% from 0.25 on:
   // probes on the far side see the wall's front faces, and the Chebyshev test then rejects
   // them for points behind it once the wall is thicker than the bias. Bounds: 3% for any
   // wall, 0.1% from a quarter spacing on.
