@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <memory>
 
 namespace bounce::ddgi {
@@ -20,14 +21,18 @@ gpu::ShaderSource shader(const char* file, std::vector<std::pair<std::string, st
   return {std::string(kShaders) + file, std::move(defines)};
 }
 
-// Every pass of the update shares these conditions, so the report says the same thing
-// for each and a frame with nothing to do culls them all.
-void addConditions(PassBuilder& b, const VolumePlan& plan) {
-  const bool lit = plan.lit, update = plan.update;
-  b.condition([lit, reason = plan.litReason] {
+// Whether anything bounces: every DDGI pass has this condition, so the report says the same
+// thing for each and a frame with nothing to bounce culls them all.
+std::function<PassDecision()> litCondition(const VolumePlan& plan) {
+  return [lit = plan.lit, reason = plan.litReason] {
     return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
-  });
-  b.condition([update, reason = plan.updateReason] {
+  };
+}
+
+// The update passes also need an update this frame (not yet converged).
+void addConditions(PassBuilder& b, const VolumePlan& plan) {
+  b.condition(litCondition(plan));
+  b.condition([update = plan.update, reason = plan.updateReason] {
     return update ? PassDecision::run(reason) : PassDecision::skip(reason);
   });
 }
@@ -39,7 +44,6 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
   Blackboard& bb = graph.blackboard();
   VolumeFrame out;
   out.probes = imported;
-  const bool lit = plan.lit;
 
   // The volume's constants and this update's ray directions, and the light mask.
   BufferHandle lightMask;
@@ -50,9 +54,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
                             Access::TransferDst);
     lightMask = b.write(b.createBuffer("DDGI.LightMask" + suffix, {plan.lightMask.size() * sizeof(uint32_t)}),
                         Access::TransferDst);
-    b.condition([lit, reason = plan.litReason] {
-      return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
-    });
+    b.condition(litCondition(plan));
     auto data = std::make_shared<std::vector<uint8_t>>(sizeof(VolumeConstants) + directionBytes);
     std::memcpy(data->data(), &plan.constants, sizeof(VolumeConstants));
     if (directionBytes > 0)
@@ -212,9 +214,7 @@ void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::v
          glm::uvec4(frame.view.width, frame.view.height, k, 0)};
   static_assert(sizeof(GatherPush) <= 128);
   const VolumePlan& first = *sources.front().plan;
-  auto litCondition = [lit = first.lit, reason = first.litReason] {
-    return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
-  };
+  const auto lit = litCondition(first);
   const glm::uvec2 gatheredSize((frame.view.width + k - 1) / k, (frame.view.height + k - 1) / k);
   TextureHandle sum;
   for (size_t i = 0; i < sources.size(); ++i) {
@@ -232,7 +232,7 @@ void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::v
                         TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, 1.0f / float(k))),
                     Access::StorageWrite);
       if (published) bb.setTexture(channels::IndirectDiffuse, sum);
-      b.condition(litCondition);
+      b.condition(lit);
       const TextureHandle out = sum;
       const std::vector<std::pair<std::string, std::string>> defines = {
           {"DDGI_ACCUMULATE", accumulate ? "1" : "0"}, {"DDGI_FINAL", last ? "1" : "0"}};
@@ -258,7 +258,7 @@ void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::v
         b.createTexture("DDGI.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
         Access::StorageWrite);
     bb.setTexture(channels::IndirectDiffuse, out);
-    b.condition(litCondition);
+    b.condition(lit);
     return [=](PassContext& ctx) {
       gpu::Bindings bind;
       bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
@@ -281,7 +281,6 @@ void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePla
   } push{frame.view.inverseViewProjection, glm::vec4(frame.view.position, probeRadius),
          glm::uvec4(frame.view.width, frame.view.height, mode, 0)};
   static_assert(sizeof(DebugPush) <= 128);
-  const bool lit = plan.lit;
   graph.addPass("DDGI.Debug", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const BufferHandle constants = b.read(volume.constants, Access::StorageRead);
     const ProbeHandles h = readProbesSampled(b, volume.probes);
@@ -293,9 +292,7 @@ void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePla
         b.write(b.createTexture("DDGI.Debug", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
                 Access::StorageWrite);
     bb.setTexture(channels::DebugView, out);
-    b.condition([lit, reason = plan.litReason] {
-      return lit ? PassDecision::run(reason) : PassDecision::skip(reason);
-    });
+    b.condition(litCondition(plan));
     return [=](PassContext& ctx) mutable {
       gpu::Bindings bind;
       // Without this frame's rays (no update ran), any buffer fills the binding; the
