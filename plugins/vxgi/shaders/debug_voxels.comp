@@ -20,24 +20,35 @@ vec4 fetchVoxel(vec3 p, int level, out bool inside) {
   ivec3 c = ivec3(floor(p / vxgiVoxelSize(level)));
   ivec3 local = c - clipMap.levelOrigin[level].xyz;
   inside = all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, ivec3(clipMap.mapSize)));
-  ivec3 t = vxgiWrap(c) + ivec3(0, 0, level * clipMap.mapSize);
-  vec4 o0 = texelFetch(opacityClip0, t, 0);
-  float density = max(o0.x, max(o0.y, o0.z));
+  ivec3 t = vxgiStorageTexel(vxgiWrap(c), level);
+  float density = 0.0;
+  vec3 e = vec3(0.0);
+#if VXGI_AO_MODE
+  vec4 o0 = texelFetch(voxelsClip0, t, 0);
+  density = max(o0.x, max(o0.y, o0.z));
 #if VXGI_DIRECTIONS == 6
-  vec4 o1 = texelFetch(opacityClip1, t, 0);
+  vec4 o1 = texelFetch(voxelsClip1, t, 0);
   density = max(density, max(o1.x, max(o1.y, o1.z)));
 #endif
-  float opacity = vxgiOpacityFromDensity(density);
-  vec3 e = vec3(0.0);
-#if !VXGI_AO_MODE
-  // The brightest facing direction: what the voxel sends the most light into.
-  e = max(max(texelFetch(emittanceClip0, t, 0).rgb, texelFetch(emittanceClip1, t, 0).rgb), texelFetch(emittanceClip2, t, 0).rgb);
+#else
+  // The densest facing direction, and the brightest: what the voxel sends the most light into.
+  vec4 f[6];
+  f[0] = texelFetch(voxelsClip0, t, 0);
+  f[1] = texelFetch(voxelsClip1, t, 0);
+  f[2] = texelFetch(voxelsClip2, t, 0);
 #if VXGI_DIRECTIONS == 6
-  e = max(e, max(max(texelFetch(emittanceClip3, t, 0).rgb, texelFetch(emittanceClip4, t, 0).rgb), texelFetch(emittanceClip5, t, 0).rgb));
+  f[3] = texelFetch(voxelsClip3, t, 0);
+  f[4] = texelFetch(voxelsClip4, t, 0);
+  f[5] = texelFetch(voxelsClip5, t, 0);
 #endif
+  for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
+    density = max(density, f[d].a);
+    e = max(e, f[d].rgb);
+  }
   // Emittance is radiance × density: back to radiance.
   e *= clipMap.emittanceDecode / max(density, 1e-6);
 #endif
+  float opacity = vxgiOpacityFromDensity(density);
   return vec4(e, opacity);
 }
 

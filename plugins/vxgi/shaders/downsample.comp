@@ -19,137 +19,128 @@ layout(push_constant) uniform Push {
   ivec4 dstSize;  // voxels to write; w: mode
 } pc;
 
-#if VXGI_EMITTANCE_FP16
-#define EMITTANCE_FORMAT rgba16f
+#if VXGI_AO_MODE || !VXGI_EMITTANCE_FP16
+#define VOXEL_FORMAT rgba8
 #else
-#define EMITTANCE_FORMAT rgba8
+#define VOXEL_FORMAT rgba16f
 #endif
-layout(binding = 40, rgba8) uniform readonly image3D opacitySrc0;
-layout(binding = 30, rgba8) uniform writeonly image3D opacityDst0;
-#if VXGI_DIRECTIONS == 6
-layout(binding = 41, rgba8) uniform readonly image3D opacitySrc1;
-layout(binding = 31, rgba8) uniform writeonly image3D opacityDst1;
+// Source and destination: texture i of clip_map.glsl (facing direction i, or in
+// ambient-occlusion mode the densities of directions 3i..3i+2).
+layout(binding = 40, VOXEL_FORMAT) uniform readonly image3D voxelsSrc0;
+layout(binding = 30, VOXEL_FORMAT) uniform writeonly image3D voxelsDst0;
+#if VXGI_DIRECTIONS == 6 || !VXGI_AO_MODE
+layout(binding = 41, VOXEL_FORMAT) uniform readonly image3D voxelsSrc1;
+layout(binding = 31, VOXEL_FORMAT) uniform writeonly image3D voxelsDst1;
 #endif
 #if !VXGI_AO_MODE
-layout(binding = 42, EMITTANCE_FORMAT) uniform readonly image3D emittanceSrc0;
-layout(binding = 43, EMITTANCE_FORMAT) uniform readonly image3D emittanceSrc1;
-layout(binding = 44, EMITTANCE_FORMAT) uniform readonly image3D emittanceSrc2;
-layout(binding = 32, EMITTANCE_FORMAT) uniform writeonly image3D emittanceDst0;
-layout(binding = 33, EMITTANCE_FORMAT) uniform writeonly image3D emittanceDst1;
-layout(binding = 34, EMITTANCE_FORMAT) uniform writeonly image3D emittanceDst2;
+layout(binding = 42, VOXEL_FORMAT) uniform readonly image3D voxelsSrc2;
+layout(binding = 32, VOXEL_FORMAT) uniform writeonly image3D voxelsDst2;
 #if VXGI_DIRECTIONS == 6
-layout(binding = 45, EMITTANCE_FORMAT) uniform readonly image3D emittanceSrc3;
-layout(binding = 46, EMITTANCE_FORMAT) uniform readonly image3D emittanceSrc4;
-layout(binding = 47, EMITTANCE_FORMAT) uniform readonly image3D emittanceSrc5;
-layout(binding = 35, EMITTANCE_FORMAT) uniform writeonly image3D emittanceDst3;
-layout(binding = 36, EMITTANCE_FORMAT) uniform writeonly image3D emittanceDst4;
-layout(binding = 37, EMITTANCE_FORMAT) uniform writeonly image3D emittanceDst5;
+layout(binding = 43, VOXEL_FORMAT) uniform readonly image3D voxelsSrc3;
+layout(binding = 44, VOXEL_FORMAT) uniform readonly image3D voxelsSrc4;
+layout(binding = 45, VOXEL_FORMAT) uniform readonly image3D voxelsSrc5;
+layout(binding = 33, VOXEL_FORMAT) uniform writeonly image3D voxelsDst3;
+layout(binding = 34, VOXEL_FORMAT) uniform writeonly image3D voxelsDst4;
+layout(binding = 35, VOXEL_FORMAT) uniform writeonly image3D voxelsDst5;
 #endif
 #endif
 
-// Where child `o` (0/1 per axis) of output voxel `local` lives in the source image,
-// and where the output goes.
+// Where child `o` (0/1 per axis) of output voxel `local` lives in the source image.
 ivec3 childCoord(ivec3 local, ivec3 o) {
-  int mode = pc.dstSize.w, n = clipMap.mapSize;
+  int mode = pc.dstSize.w;
   if (mode == 0) {
     int level = pc.dstMin.w;
     ivec3 child = 2 * (pc.dstMin.xyz + local) + o;  // world voxels of level − 1
-    return vxgiWrap(child) + ivec3(0, 0, (level - 1) * n);
+    return vxgiStorageTexel(vxgiWrap(child), level - 1);
   }
-  if (mode == 1) return 2 * local + o + ivec3(0, 0, (clipMap.levelCount - 1) * n);  // local is toroidal already
+  if (mode == 1) return vxgiStorageTexel(2 * local + o, clipMap.levelCount - 1);  // local is toroidal already
   return 2 * local + o;
 }
 
-ivec3 outputCoord(ivec3 local) {
-  if (pc.dstSize.w == 0) return vxgiWrap(pc.dstMin.xyz + local) + ivec3(0, 0, pc.dstMin.w * clipMap.mapSize);
-  return local;
-}
+// The 2×2×2 block of one source texture, child (x, y, z) at index x + 2y + 4z.
+#define LOAD_BLOCK(image, local, block)                                               \
+  for (int i_ = 0; i_ < 8; ++i_) block[i_] = imageLoad(image, childCoord(local, ivec3(i_ & 1, (i_ >> 1) & 1, i_ >> 2)));
 
-// Stored density of child o for facing direction d (0..2: +axis or axis, 3..5: −axis).
-float childDensity(ivec3 local, ivec3 o, int d) {
-  ivec3 c = childCoord(local, o);
+// One facing direction d of the block; each child as (radiance × density, density)
+// in stored units. Returns the block's value in the same units.
+vec4 downsampleFacing(vec4 child[8], int d) {
+  int axis = d % 3;
+  // Light leaving through facing direction d meets the child further along that
+  // direction last: that is the one nearer the receiver ("downstream").
+  bool towardsPositive = d < 3;
+  ivec2 across = axis == 0 ? ivec2(1, 2) : (axis == 1 ? ivec2(2, 0) : ivec2(0, 1));
+  int stride[3] = int[3](1, 2, 4);
+  float a = 0.0;
+  vec3 e = vec3(0.0);
+  for (int col = 0; col < 4; ++col) {
+    int lo = (col & 1) * stride[across.x] + (col >> 1) * stride[across.y];
+    int hi = lo + stride[axis];
+    float aLo = vxgiOpacityFromDensity(child[lo].a), aHi = vxgiOpacityFromDensity(child[hi].a);
+    // Radiance × opacity: stored emittance × α/density, which stays finite and keeps a
+    // faint voxel's light where its stored density rounded to 0 (clip_map.glsl).
+    vec3 lLo = child[lo].rgb * vxgiAlphaPerDensity(child[lo].a, 1.0);
+    vec3 lHi = child[hi].rgb * vxgiAlphaPerDensity(child[hi].a, 1.0);
+    a += 1.0 - (1.0 - aLo) * (1.0 - aHi);
 #if VXGI_DIRECTIONS == 6
-  return d < 3 ? imageLoad(opacitySrc0, c)[d] : imageLoad(opacitySrc1, c)[d - 3];
+    e += towardsPositive ? lHi + (1.0 - aHi) * lLo : lLo + (1.0 - aLo) * lHi;
 #else
-  return imageLoad(opacitySrc0, c)[d];
-#endif
-}
-
-float childOpacity(ivec3 local, ivec3 o, int d) { return vxgiOpacityFromDensity(childDensity(local, o, d)); }
-
-vec3 childEmittanceStored(ivec3 local, ivec3 o, int d) {
-#if VXGI_AO_MODE
-  return vec3(0.0);
-#else
-  ivec3 c = childCoord(local, o);
-  switch (d) {
-    case 0: return imageLoad(emittanceSrc0, c).rgb;
-    case 1: return imageLoad(emittanceSrc1, c).rgb;
-    case 2: return imageLoad(emittanceSrc2, c).rgb;
-#if VXGI_DIRECTIONS == 6
-    case 3: return imageLoad(emittanceSrc3, c).rgb;
-    case 4: return imageLoad(emittanceSrc4, c).rgb;
-    case 5: return imageLoad(emittanceSrc5, c).rgb;
+    // Three axes only: light leaves both ways; average the two orders.
+    e += 0.5 * ((lHi + (1.0 - aHi) * lLo) + (lLo + (1.0 - aLo) * lHi));
 #endif
   }
-  return vec3(0.0);
-#endif
+  // The block: mean opacity of its columns, and the radiance leaving it per unit of
+  // that opacity, stored again as density and radiance × density. Averages of stored
+  // values stay within the storage range: no re-encoding needed.
+  float density = vxgiDensityFromOpacity(saturate(a * 0.25));
+  return vec4((e * 0.25) / vxgiAlphaPerDensity(density, 1.0), density);
 }
 
-// Radiance × opacity of child o: stored emittance × α/density, which stays finite and
-// keeps a faint voxel's light where its stored density rounded to 0 (clip_map.glsl).
-vec3 childRadianceTimesOpacity(ivec3 local, ivec3 o, int d) {
-  return childEmittanceStored(local, o, d) * vxgiAlphaPerDensity(childDensity(local, o, d), 1.0);
+// Stores the block's value: into the clipped level (with its guard slice) or a mip.
+#define STORE_OUTPUT(image, local, value)                                                 \
+  if (pc.dstSize.w == 0) {                                                                \
+    VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, value)           \
+  } else {                                                                                \
+    imageStore(image, local, value);                                                      \
+  }
+
+#if VXGI_AO_MODE
+// Ambient-occlusion mode: texture i packs the densities of directions 3i..3i+2.
+vec4 downsampleDensities(vec4 packed[8], int firstDirection) {
+  vec4 out_ = vec4(0.0);
+  vec4 child[8];
+  for (int k = 0; k < 3; ++k) {
+    for (int i = 0; i < 8; ++i) child[i] = vec4(0.0, 0.0, 0.0, packed[i][k]);
+    out_[k] = downsampleFacing(child, firstDirection + k).a;
+  }
+  return out_;
 }
+#endif
 
 void main() {
   ivec3 local = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(local, pc.dstSize.xyz))) return;
-  float opacity[6];  // stored density
-  vec3 emittance[6];
-  for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
-    int axis = d % 3;
-    // Light leaving through facing direction d meets the child further along that
-    // direction last: that is the one nearer the receiver ("downstream").
-    bool towardsPositive = d < 3;
-    ivec2 across = axis == 0 ? ivec2(1, 2) : (axis == 1 ? ivec2(2, 0) : ivec2(0, 1));
-    float a = 0.0;
-    vec3 e = vec3(0.0);
-    for (int col = 0; col < 4; ++col) {
-      ivec3 lo = ivec3(0), hi = ivec3(0);
-      lo[across.x] = hi[across.x] = col & 1;
-      lo[across.y] = hi[across.y] = col >> 1;
-      hi[axis] = 1;
-      float aLo = childOpacity(local, lo, d), aHi = childOpacity(local, hi, d);
-      vec3 lLo = childRadianceTimesOpacity(local, lo, d), lHi = childRadianceTimesOpacity(local, hi, d);
-      a += 1.0 - (1.0 - aLo) * (1.0 - aHi);
+  vec4 block[8];
+#if VXGI_AO_MODE
+  LOAD_BLOCK(voxelsSrc0, local, block)
+  STORE_OUTPUT(voxelsDst0, local, downsampleDensities(block, 0))
 #if VXGI_DIRECTIONS == 6
-      e += towardsPositive ? lHi + (1.0 - aHi) * lLo : lLo + (1.0 - aLo) * lHi;
+  LOAD_BLOCK(voxelsSrc1, local, block)
+  STORE_OUTPUT(voxelsDst1, local, downsampleDensities(block, 3))
+#endif
 #else
-      // Three axes only: light leaves both ways; average the two orders.
-      e += 0.5 * ((lHi + (1.0 - aHi) * lLo) + (lLo + (1.0 - aLo) * lHi));
-#endif
-    }
-    // The block: mean opacity of its columns, and the radiance leaving it per unit of
-    // that opacity, stored again as density and radiance × density.
-    float alpha = saturate(a * 0.25);
-    opacity[d] = vxgiDensityFromOpacity(alpha);
-    emittance[d] = (e * 0.25) / vxgiAlphaPerDensity(opacity[d], 1.0);
-  }
-  ivec3 dst = outputCoord(local);
-  imageStore(opacityDst0, dst, vec4(opacity[0], opacity[1], opacity[2], 0.0));
+  LOAD_BLOCK(voxelsSrc0, local, block)
+  STORE_OUTPUT(voxelsDst0, local, downsampleFacing(block, 0))
+  LOAD_BLOCK(voxelsSrc1, local, block)
+  STORE_OUTPUT(voxelsDst1, local, downsampleFacing(block, 1))
+  LOAD_BLOCK(voxelsSrc2, local, block)
+  STORE_OUTPUT(voxelsDst2, local, downsampleFacing(block, 2))
 #if VXGI_DIRECTIONS == 6
-  imageStore(opacityDst1, dst, vec4(opacity[3], opacity[4], opacity[5], 0.0));
-#endif
-#if !VXGI_AO_MODE
-  // Averages of stored values stay within the storage range: no re-encoding needed.
-  imageStore(emittanceDst0, dst, vec4(emittance[0], 1.0));
-  imageStore(emittanceDst1, dst, vec4(emittance[1], 1.0));
-  imageStore(emittanceDst2, dst, vec4(emittance[2], 1.0));
-#if VXGI_DIRECTIONS == 6
-  imageStore(emittanceDst3, dst, vec4(emittance[3], 1.0));
-  imageStore(emittanceDst4, dst, vec4(emittance[4], 1.0));
-  imageStore(emittanceDst5, dst, vec4(emittance[5], 1.0));
+  LOAD_BLOCK(voxelsSrc3, local, block)
+  STORE_OUTPUT(voxelsDst3, local, downsampleFacing(block, 3))
+  LOAD_BLOCK(voxelsSrc4, local, block)
+  STORE_OUTPUT(voxelsDst4, local, downsampleFacing(block, 4))
+  LOAD_BLOCK(voxelsSrc5, local, block)
+  STORE_OUTPUT(voxelsDst5, local, downsampleFacing(block, 5))
 #endif
 #endif
 }

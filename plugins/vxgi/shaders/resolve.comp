@@ -1,6 +1,7 @@
 #version 460
 // Voxelization, step 4: turns the scratch sums of one level's dirty box into density
-// and emittance in the clip-map (see clip_map.glsl), per facing direction:
+// and emittance in the clip-map (see clip_map.glsl and clip_map_layout.h), per facing
+// direction:
 //   opacity   α = min(1, Σ coverage), stored as density (normalised optical depth)
 //   radiance  L = Σ radiance·weight / Σ coverage (weight = coverage when proportional)
 //   emittance = L × density
@@ -20,33 +21,36 @@ layout(push_constant) uniform Push {
 } pc;
 
 layout(binding = 21, r32f) uniform readonly image3D scratch;
-layout(binding = 30, rgba8) uniform writeonly image3D opacityOut0;
+#if VXGI_AO_MODE
+// Densities of facing directions 3i..3i+2 in texture i.
+layout(binding = 30, rgba8) uniform writeonly image3D voxelsOut0;
 #if VXGI_DIRECTIONS == 6
-layout(binding = 31, rgba8) uniform writeonly image3D opacityOut1;
+layout(binding = 31, rgba8) uniform writeonly image3D voxelsOut1;
 #endif
-#if !VXGI_AO_MODE
-#if VXGI_EMITTANCE_FP16
-#define EMITTANCE_FORMAT rgba16f
 #else
-#define EMITTANCE_FORMAT rgba8
+#if VXGI_EMITTANCE_FP16
+#define VOXEL_FORMAT rgba16f
+#else
+#define VOXEL_FORMAT rgba8
 #endif
-layout(binding = 32, EMITTANCE_FORMAT) uniform writeonly image3D emittanceOut0;
-layout(binding = 33, EMITTANCE_FORMAT) uniform writeonly image3D emittanceOut1;
-layout(binding = 34, EMITTANCE_FORMAT) uniform writeonly image3D emittanceOut2;
+// Facing direction d in texture d: rgb radiance × density, a density.
+layout(binding = 30, VOXEL_FORMAT) uniform writeonly image3D voxelsOut0;
+layout(binding = 31, VOXEL_FORMAT) uniform writeonly image3D voxelsOut1;
+layout(binding = 32, VOXEL_FORMAT) uniform writeonly image3D voxelsOut2;
 #if VXGI_DIRECTIONS == 6
-layout(binding = 35, EMITTANCE_FORMAT) uniform writeonly image3D emittanceOut3;
-layout(binding = 36, EMITTANCE_FORMAT) uniform writeonly image3D emittanceOut4;
-layout(binding = 37, EMITTANCE_FORMAT) uniform writeonly image3D emittanceOut5;
+layout(binding = 33, VOXEL_FORMAT) uniform writeonly image3D voxelsOut3;
+layout(binding = 34, VOXEL_FORMAT) uniform writeonly image3D voxelsOut4;
+layout(binding = 35, VOXEL_FORMAT) uniform writeonly image3D voxelsOut5;
 #endif
 #endif
 
-// Radiance in storage units: RGBA8 saturates at 1 / storage scale (the seed's HDR
-// caveat); FP16 is clamped to its largest finite value.
-vec4 encodeEmittance(vec3 e) {
+// Radiance × density and density in storage units: RGBA8 saturates radiance at 1 /
+// storage scale (the seed's HDR caveat); FP16 is clamped to its largest finite value.
+vec4 encodeVoxel(vec3 emittance, float density) {
 #if VXGI_EMITTANCE_FP16
-  return vec4(sanitize(e, HALF_MAX), 1.0);
+  return vec4(sanitize(emittance, HALF_MAX), density);
 #else
-  return vec4(saturate(sanitize(e * pc.storageScale, 1.0)), 1.0);
+  return vec4(saturate(sanitize(emittance * pc.storageScale, 1.0)), density);
 #endif
 }
 
@@ -55,9 +59,8 @@ void main() {
   if (any(greaterThanEqual(local, pc.boxSize.xyz))) return;
   int level = pc.boxMin.w;
   ivec3 t = vxgiWrap(pc.boxMin.xyz + local);
-  ivec3 dst = t + ivec3(0, 0, level * clipMap.mapSize);
   int per = pc.scratchLayout.y;
-  float opacity[6];
+  float density[6];
   vec3 emittance[6];
   for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
 #if VXGI_AO_MODE
@@ -71,25 +74,22 @@ void main() {
     // finite, and the density below is then 0 anyway.
     emittance[d] = sum / max(w, 1e-6);
 #endif
-    opacity[d] = vxgiDensityFromOpacity(saturate(isnan(w) ? 0.0 : w));
-#if !VXGI_AO_MODE
-    emittance[d] *= opacity[d];
-#endif
+    density[d] = vxgiDensityFromOpacity(saturate(isnan(w) ? 0.0 : w));
+    emittance[d] *= density[d];
   }
+#if VXGI_AO_MODE
+  VXGI_STORE_CLIP(voxelsOut0, t, level, vec4(density[0], density[1], density[2], 0.0))
 #if VXGI_DIRECTIONS == 6
-  imageStore(opacityOut0, dst, vec4(opacity[0], opacity[1], opacity[2], 0.0));
-  imageStore(opacityOut1, dst, vec4(opacity[3], opacity[4], opacity[5], 0.0));
-#else
-  imageStore(opacityOut0, dst, vec4(opacity[0], opacity[1], opacity[2], 0.0));
+  VXGI_STORE_CLIP(voxelsOut1, t, level, vec4(density[3], density[4], density[5], 0.0))
 #endif
-#if !VXGI_AO_MODE
-  imageStore(emittanceOut0, dst, encodeEmittance(emittance[0]));
-  imageStore(emittanceOut1, dst, encodeEmittance(emittance[1]));
-  imageStore(emittanceOut2, dst, encodeEmittance(emittance[2]));
+#else
+  VXGI_STORE_CLIP(voxelsOut0, t, level, encodeVoxel(emittance[0], density[0]))
+  VXGI_STORE_CLIP(voxelsOut1, t, level, encodeVoxel(emittance[1], density[1]))
+  VXGI_STORE_CLIP(voxelsOut2, t, level, encodeVoxel(emittance[2], density[2]))
 #if VXGI_DIRECTIONS == 6
-  imageStore(emittanceOut3, dst, encodeEmittance(emittance[3]));
-  imageStore(emittanceOut4, dst, encodeEmittance(emittance[4]));
-  imageStore(emittanceOut5, dst, encodeEmittance(emittance[5]));
+  VXGI_STORE_CLIP(voxelsOut3, t, level, encodeVoxel(emittance[3], density[3]))
+  VXGI_STORE_CLIP(voxelsOut4, t, level, encodeVoxel(emittance[4], density[4]))
+  VXGI_STORE_CLIP(voxelsOut5, t, level, encodeVoxel(emittance[5], density[5]))
 #endif
 #endif
 }

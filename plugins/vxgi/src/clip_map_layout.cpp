@@ -16,15 +16,13 @@ int32_t floorEven(int32_t v) { return v >= 0 ? v & ~1 : -((-v + 1) & ~1); }
 }  // namespace
 
 uint32_t ClipMapFormat::bytesPerVoxel() const {
-  const uint32_t opacity = 4u * opacityTextureCount();
-  const uint32_t emittance = emittanceTextureCount() * (emittanceFp16 ? 8u : 4u);
-  return opacity + emittance;
+  return 4u * opacityTextureCount() + directionTextureCount() * (emittanceFp16 ? 8u : 4u);
 }
 
 uint32_t ClipMapFormat::mipCount() const { return mapSize >= 2 ? uint32_t(std::countr_zero(mapSize)) : 0u; }
 
 uint64_t ClipMapFormat::clipBytes() const {
-  return uint64_t(stackLevels) * mapSize * mapSize * mapSize * bytesPerVoxel();
+  return uint64_t(stackLevels) * mapSize * mapSize * levelSlices() * bytesPerVoxel();
 }
 
 uint64_t ClipMapFormat::mipBytes() const {

@@ -4,17 +4,22 @@
 // an anchor, then a mip pyramid of the coarsest level down to 1³.
 //
 // Storage, per voxel, indexed by the direction a surface faces ("facing direction"):
-//   opacity:   3 axes in one RGBA8 texture, or 6 signed directions in two
-//              (+X+Y+Z and −X−Y−Z); stored as density, the optical depth of the
-//              projected coverage normalised to 0..1 (linear filtering then averages
-//              what Beer–Lambert integrates; see shaders/vxgi/clip_map.glsl)
-//   emittance: one texture per facing direction, RGBA8 (scaled by the storage scale)
-//              or RGBA16F; rgb is radiance × density
-// so 3 directions with RGBA8 cost 4 + 3·4 = 16 B per voxel and 6 directions with FP16
-// 8 + 6·8 = 56 B, the seed's range. Clipped levels are stacked along Z in one 3D
-// texture per channel (size × size × size·levels) and addressed toroidally: world
-// voxel c of level l lives at (c mod size) + (0, 0, l·size), so moving the anchor only
-// rewrites the slabs that came into view.
+// one texture per facing direction (6 signed, or 3 axes), RGBA = (radiance × density,
+// density), where density is the optical depth of the projected coverage normalised to
+// 0..1 (linear filtering then averages what Beer–Lambert integrates; see
+// shaders/vxgi/clip_map.glsl). RGBA8 (rgb scaled by the storage scale) or RGBA16F. A
+// cone step needs the three facing directions against its axis, each one texture fetch
+// holding both density and emittance: 3 fetches per level instead of 2 opacity + 3
+// emittance textures. 3 directions in RGBA8 cost 12 B per voxel, 6 in FP16 48 B (the
+// seed keeps opacity apart: 16..56 B). Ambient-occlusion mode stores density alone,
+// 3 or 6 directions in one or two RGBA8 textures (4 or 8 B).
+//
+// Clipped levels are stacked along Z in one 3D texture per facing direction and
+// addressed toroidally: world voxel c of level l lives at (c mod size) + (0, 0,
+// l·(size + 1)). The extra slice per level (the "guard slice", z = size) repeats slice
+// 0, so one hardware trilinear fetch covers the toroidal seam along Z as the sampler's
+// repeat addressing does along X and Y; moving the anchor only rewrites the slabs that
+// came into view.
 
 #include <bounce/scene/aabb.h>
 
@@ -36,13 +41,19 @@ struct ClipMapFormat {
   bool ambientOcclusionMode = false;  ///< opacity only: no emittance textures at all
 
   uint32_t directionCount() const { return sixDirections ? 6u : 3u; }
-  uint32_t opacityTextureCount() const { return sixDirections ? 2u : 1u; }
-  uint32_t emittanceTextureCount() const { return ambientOcclusionMode ? 0u : directionCount(); }
-  /// Bytes per voxel of one clipped level or mip: the seed's 16..56 B.
+  /// Textures of (radiance × density, density), one per facing direction; none in
+  /// ambient-occlusion mode.
+  uint32_t directionTextureCount() const { return ambientOcclusionMode ? 0u : directionCount(); }
+  /// Density-only textures (ambient-occlusion mode): 3 facing directions per RGBA8 texel.
+  uint32_t opacityTextureCount() const { return ambientOcclusionMode ? (sixDirections ? 2u : 1u) : 0u; }
+  /// Bytes per voxel of one clipped level or mip: 12..48 B (4 or 8 B without emittance).
   uint32_t bytesPerVoxel() const;
+  /// Z slices each clipped level takes in the stacked textures: size + the guard slice.
+  uint32_t levelSlices() const { return mapSize + 1; }
   /// Coarser mip levels of the coarsest clipped level: size/2 ... 1.
   uint32_t mipCount() const;
-  /// Device memory of every clip-map texture: levels × size³ × bytes per voxel + mips.
+  /// Device memory of every clip-map texture: levels × size² × (size + 1) × bytes per
+  /// voxel (the guard slice included) + mips.
   uint64_t bytes() const;
   uint64_t clipBytes() const;
   uint64_t mipBytes() const;

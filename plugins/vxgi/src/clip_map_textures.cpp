@@ -11,7 +11,7 @@ TextureDesc clipDesc(const ClipMapFormat& f, VkFormat format) {
   d.type = TextureType::Tex3D;
   d.format = format;
   d.width = d.height = f.mapSize;
-  d.depth = f.mapSize * f.stackLevels;  // levels stacked along Z
+  d.depth = f.levelSlices() * f.stackLevels;  // levels stacked along Z, each with its guard slice
   return d;
 }
 
@@ -24,7 +24,8 @@ TextureDesc mipDesc(const ClipMapFormat& f, VkFormat format) {
   return d;
 }
 
-VkFormat emittanceFormat(const ClipMapFormat& f) {
+VkFormat voxelFormat(const ClipMapFormat& f) {
+  if (f.ambientOcclusionMode) return VK_FORMAT_R8G8B8A8_UNORM;
   return f.emittanceFp16 ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R8G8B8A8_UNORM;
 }
 
@@ -34,58 +35,46 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
   if (configured_ && format == format_) return false;
   format_ = format;
   configured_ = true;
-  opacityClip_.clear();
-  emittanceClip_.clear();
-  opacityMip_.clear();
-  emittanceMip_.clear();
-  for (uint32_t i = 0; i < format.opacityTextureCount(); ++i) {
-    opacityClip_.push_back(std::make_unique<PersistentTexture>(fmt::format("VXGI.Opacity{}", i),
-                                                               clipDesc(format, VK_FORMAT_R8G8B8A8_UNORM)));
-    opacityMip_.push_back(std::make_unique<PersistentTexture>(fmt::format("VXGI.OpacityMips{}", i),
-                                                              mipDesc(format, VK_FORMAT_R8G8B8A8_UNORM)));
-  }
-  for (uint32_t i = 0; i < format.emittanceTextureCount(); ++i) {
-    emittanceClip_.push_back(std::make_unique<PersistentTexture>(fmt::format("VXGI.Emittance{}", i),
-                                                                 clipDesc(format, emittanceFormat(format))));
-    emittanceMip_.push_back(std::make_unique<PersistentTexture>(fmt::format("VXGI.EmittanceMips{}", i),
-                                                                mipDesc(format, emittanceFormat(format))));
+  clip_.clear();
+  mips_.clear();
+  const bool ao = format.ambientOcclusionMode;
+  const uint32_t count = ao ? format.opacityTextureCount() : format.directionTextureCount();
+  for (uint32_t i = 0; i < count; ++i) {
+    const std::string name = ao ? fmt::format("VXGI.Opacity{}", i) : fmt::format("VXGI.Facing{}", i);
+    clip_.push_back(std::make_unique<PersistentTexture>(name, clipDesc(format, voxelFormat(format))));
+    mips_.push_back(std::make_unique<PersistentTexture>(name + "Mips", mipDesc(format, voxelFormat(format))));
   }
   return true;
 }
 
 ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
   ClipMapHandles h;
-  for (auto& t : opacityClip_) h.opacityClip.push_back(graph.importTexture(*t));
-  for (auto& t : emittanceClip_) h.emittanceClip.push_back(graph.importTexture(*t));
-  for (auto& t : opacityMip_) h.opacityMip.push_back(graph.importTexture(*t));
-  for (auto& t : emittanceMip_) h.emittanceMip.push_back(graph.importTexture(*t));
+  for (auto& t : clip_) h.clip.push_back(graph.importTexture(*t));
+  for (auto& t : mips_) h.mips.push_back(graph.importTexture(*t));
   return h;
 }
 
 ClipMapHandles ClipMapTextures::readSampled(PassBuilder& b, ClipMapHandles h) {
   h.constants = b.read(h.constants, Access::StorageRead);
-  for (auto* list : {&h.opacityClip, &h.emittanceClip, &h.opacityMip, &h.emittanceMip})
+  for (auto* list : {&h.clip, &h.mips})
     for (TextureHandle& t : *list) t = b.read(t, Access::Sampled);
   return h;
 }
 
 void ClipMapTextures::bindSampled(gpu::Bindings& b, const ClipMapHandles& h) {
   b.buffer("clipMap", h.constants);
-  // Clipped levels wrap in the sampler along X and Y and by hand along Z (they are
-  // stacked in Z); the pyramid wraps in the sampler along all three.
-  for (size_t i = 0; i < h.opacityClip.size(); ++i)
-    b.texture(fmt::format("opacityClip{}", i), h.opacityClip[i], gpu::SamplerKind::LinearRepeat);
-  for (size_t i = 0; i < h.emittanceClip.size(); ++i)
-    b.texture(fmt::format("emittanceClip{}", i), h.emittanceClip[i], gpu::SamplerKind::LinearRepeat);
-  for (size_t i = 0; i < h.opacityMip.size(); ++i)
-    b.texture(fmt::format("opacityMip{}", i), h.opacityMip[i], gpu::SamplerKind::LinearMipmapRepeat);
-  for (size_t i = 0; i < h.emittanceMip.size(); ++i)
-    b.texture(fmt::format("emittanceMip{}", i), h.emittanceMip[i], gpu::SamplerKind::LinearMipmapRepeat);
+  // Clipped levels wrap in the sampler along X and Y, and along Z through the guard slice
+  // (they are stacked in Z; the shader keeps Z inside a level); the pyramid wraps in the
+  // sampler along all three.
+  for (size_t i = 0; i < h.clip.size(); ++i)
+    b.texture(fmt::format("voxelsClip{}", i), h.clip[i], gpu::SamplerKind::LinearRepeat);
+  for (size_t i = 0; i < h.mips.size(); ++i)
+    b.texture(fmt::format("voxelsMip{}", i), h.mips[i], gpu::SamplerKind::LinearMipmapRepeat);
 }
 
 uint64_t ClipMapTextures::bytes() const {
   uint64_t total = 0;
-  for (const auto* list : {&opacityClip_, &emittanceClip_, &opacityMip_, &emittanceMip_})
+  for (const auto* list : {&clip_, &mips_})
     for (const auto& t : *list) total += textureBytes(t->desc());
   return total;
 }

@@ -14,9 +14,11 @@
 
 namespace bounce::vxgi {
 
-/// This frame's versions of every clip-map texture.
+/// This frame's versions of every clip-map texture: texture i of the clipped levels and
+/// of the mip pyramid holds facing direction i (radiance × density, density), or in
+/// ambient-occlusion mode the densities of facing directions 3i..3i+2.
 struct ClipMapHandles {
-  std::vector<TextureHandle> opacityClip, emittanceClip, opacityMip, emittanceMip;
+  std::vector<TextureHandle> clip, mips;
   BufferHandle constants;  ///< ClipMapConstants for this frame
 };
 
@@ -40,7 +42,7 @@ class ClipMapTextures {
  private:
   ClipMapFormat format_{};
   bool configured_ = false;
-  std::vector<std::unique_ptr<PersistentTexture>> opacityClip_, emittanceClip_, opacityMip_, emittanceMip_;
+  std::vector<std::unique_ptr<PersistentTexture>> clip_, mips_;
 };
 
 /// std430 VxgiClipMap in clip_map.glsl.

@@ -271,16 +271,14 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     graph.addPass(fmt::format("VXGI.Resolve.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       TextureHandle sums = b.read(scratchTexture, Access::StorageRead);
       BufferHandle constants = b.read(handles.constants, Access::StorageRead);
-      writeAll(b, handles.opacityClip);
-      writeAll(b, handles.emittanceClip);
+      writeAll(b, handles.clip);
       b.condition(decide);
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("resolve.comp", format));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants).storage("scratch", sums);
-        bindStorage(bind, "opacityOut", h.opacityClip);
-        bindStorage(bind, "emittanceOut", h.emittanceClip);
+        bindStorage(bind, "voxelsOut", h.clip);
         for (const VoxelBox& box : boxes) {
           const glm::ivec3 size = box.max - box.min;
           ResolvePush push{glm::ivec4(box.min, int32_t(level)), glm::ivec4(size, 0),
@@ -294,8 +292,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     if (level == 0) continue;
     graph.addPass(fmt::format("VXGI.Downsample.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       BufferHandle constants = b.read(handles.constants, Access::StorageRead);
-      writeAll(b, handles.opacityClip);
-      writeAll(b, handles.emittanceClip);
+      writeAll(b, handles.clip);
       b.condition([work, reason] {
         return work ? PassDecision::run("the finer level changed") : PassDecision::skip(reason);
       });
@@ -305,10 +302,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         gpu::Bindings bind;
         bind.buffer("clipMap", constants);
         // Source and destination are the same textures, different levels of the stack.
-        bindStorage(bind, "opacitySrc", h.opacityClip);
-        bindStorage(bind, "emittanceSrc", h.emittanceClip);
-        bindStorage(bind, "opacityDst", h.opacityClip);
-        bindStorage(bind, "emittanceDst", h.emittanceClip);
+        bindStorage(bind, "voxelsSrc", h.clip);
+        bindStorage(bind, "voxelsDst", h.clip);
         const glm::ivec3 size = inner.max - inner.min;
         DownsamplePush push{glm::ivec4(inner.min, int32_t(level)), glm::ivec4(size, 0)};
         ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
@@ -318,10 +313,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
 
   graph.addPass("VXGI.Mips", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     BufferHandle constants = b.read(handles.constants, Access::StorageRead);
-    for (TextureHandle h : handles.opacityClip) b.read(h, Access::StorageRead);
-    for (TextureHandle h : handles.emittanceClip) b.read(h, Access::StorageRead);
-    writeAll(b, handles.opacityMip);
-    writeAll(b, handles.emittanceMip);
+    for (TextureHandle h : handles.clip) b.read(h, Access::StorageRead);
+    writeAll(b, handles.mips);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     const ClipMapHandles h = handles;
     return [=](PassContext& ctx) {
@@ -330,15 +323,11 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       for (uint32_t mip = 0; mip < format.mipCount(); ++mip, size /= 2) {
         gpu::Bindings bind;
         bind.buffer("clipMap", constants);
-        if (mip == 0) {
-          bindStorage(bind, "opacitySrc", h.opacityClip);
-          bindStorage(bind, "emittanceSrc", h.emittanceClip);
-        } else {
-          bindStorage(bind, "opacitySrc", h.opacityMip, mip - 1);
-          bindStorage(bind, "emittanceSrc", h.emittanceMip, mip - 1);
-        }
-        bindStorage(bind, "opacityDst", h.opacityMip, mip);
-        bindStorage(bind, "emittanceDst", h.emittanceMip, mip);
+        if (mip == 0)
+          bindStorage(bind, "voxelsSrc", h.clip);
+        else
+          bindStorage(bind, "voxelsSrc", h.mips, mip - 1);
+        bindStorage(bind, "voxelsDst", h.mips, mip);
         DownsamplePush push{glm::ivec4(0), glm::ivec4(glm::ivec3(int32_t(size)), mip == 0 ? 1 : 2)};
         ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
         // The next mip reads what this one wrote.

@@ -38,8 +38,9 @@ TEST_F(VxgiHardCases, TestCubeIsOpaqueThenQuarterThenSixteenthAtCoarserLevels) {
         with(kSmall, {"Material.UsedWithVxgiVoxelization=0", "r.VXGI.VoxelSize=0.125",
                       "r.VXGI.TestCube=0.0625 1.0625 0.0625 0.125"}),
         "VXGI");
-  // RGBA8 opacity stores density (optical depth / 9.21) in 1/255 steps: 25% reads back
-  // as 25.1% and 6.25% as 7.0% (clip_map.glsl), so the tolerance is 1 percentage point.
+  // Density (optical depth / 9.21) is stored in the alpha of each facing direction's FP16
+  // texel (the default emittance format), next to radiance × density; the debug view's
+  // 8-bit sRGB output limits the tolerance to 1 percentage point.
   const float expected[3] = {1.0f, 0.25f, 0.0625f};
   for (int level = 0; level < 3; ++level) {
     engine->console().execute(fmt::format("r.VXGI.DebugLevel {}", level));
@@ -64,11 +65,10 @@ TEST_F(VxgiHardCases, TestCubeIsOpaqueThenQuarterThenSixteenthAtCoarserLevels) {
                 radiance);
     EXPECT_NEAR(alpha, expected[level], 0.01f) << "level " << level;
     // The emittance is averaged: the mean radiance of what is opaque stays 1. The view
-    // divides emittance (radiance × density) by the density as stored in 8 bits, so it
-    // reads 1 × exact / stored density: 0.89 at level 2, where 6.25% rounds up to 7.0%.
-    const double density = -std::log(1.0 - std::min(double(expected[level]), 0.9999)) / 9.2103;
-    const double stored = std::round(density * 255.0) / 255.0;
-    EXPECT_NEAR(radiance, density / stored, 0.05) << "level " << level;  // 5%: the display's 8 bits
+    // divides emittance (radiance × density) by the density stored beside it in FP16.
+    // (With opacity in a separate RGBA8 texture it read 0.89 at level 2, where 6.25%
+    // rounded up to 7.0%.)
+    EXPECT_NEAR(radiance, 1.0f, 0.05f) << "level " << level;  // 5%: the display's 8 bits
   }
 }
 

@@ -48,30 +48,26 @@ layout(std430, binding = 0) readonly buffer VxgiClipMap {
 #define VXGI_CLIP_MAP_TEXTURES 1  // 0: only the placement (voxelization shaders)
 #endif
 #if VXGI_CLIP_MAP_TEXTURES
-// Clipped levels, stacked along Z. Opacity: facing directions +X+Y+Z (and −X−Y−Z).
-layout(binding = 1) uniform sampler3D opacityClip0;
-#if VXGI_DIRECTIONS == 6
-layout(binding = 2) uniform sampler3D opacityClip1;
-#endif
-// The mip pyramid of the coarsest level (toroidal too: sampled with wrap-around).
-layout(binding = 9) uniform sampler3D opacityMip0;
-#if VXGI_DIRECTIONS == 6
-layout(binding = 10) uniform sampler3D opacityMip1;
+// Clipped levels stacked along Z (each with its guard slice), and the mip pyramid of the
+// coarsest level (toroidal too: sampled with wrap-around). Texture d holds facing
+// direction d (+X +Y +Z −X −Y −Z): rgb radiance × density, a density. In
+// ambient-occlusion mode texture i holds the densities of facing directions 3i..3i+2.
+layout(binding = 1) uniform sampler3D voxelsClip0;
+layout(binding = 9) uniform sampler3D voxelsMip0;
+#if VXGI_DIRECTIONS == 6 || !VXGI_AO_MODE
+layout(binding = 2) uniform sampler3D voxelsClip1;
+layout(binding = 10) uniform sampler3D voxelsMip1;
 #endif
 #if !VXGI_AO_MODE
-layout(binding = 3) uniform sampler3D emittanceClip0;
-layout(binding = 4) uniform sampler3D emittanceClip1;
-layout(binding = 5) uniform sampler3D emittanceClip2;
-layout(binding = 11) uniform sampler3D emittanceMip0;
-layout(binding = 12) uniform sampler3D emittanceMip1;
-layout(binding = 13) uniform sampler3D emittanceMip2;
+layout(binding = 3) uniform sampler3D voxelsClip2;
+layout(binding = 11) uniform sampler3D voxelsMip2;
 #if VXGI_DIRECTIONS == 6
-layout(binding = 6) uniform sampler3D emittanceClip3;
-layout(binding = 7) uniform sampler3D emittanceClip4;
-layout(binding = 8) uniform sampler3D emittanceClip5;
-layout(binding = 14) uniform sampler3D emittanceMip3;
-layout(binding = 15) uniform sampler3D emittanceMip4;
-layout(binding = 16) uniform sampler3D emittanceMip5;
+layout(binding = 4) uniform sampler3D voxelsClip3;
+layout(binding = 5) uniform sampler3D voxelsClip4;
+layout(binding = 6) uniform sampler3D voxelsClip5;
+layout(binding = 12) uniform sampler3D voxelsMip3;
+layout(binding = 13) uniform sampler3D voxelsMip4;
+layout(binding = 14) uniform sampler3D voxelsMip5;
 #endif
 #endif
 
@@ -99,27 +95,34 @@ ivec3 vxgiWrap(ivec3 c) {
   return ((c % n) + n) % n;
 }
 
-#if VXGI_CLIP_MAP_TEXTURES
-// One trilinear sample of a clipped level at world position p. The levels are stacked
-// along Z, so the sampler wraps X and Y toroidally (repeat addressing) but not Z: the
-// two Z slices are fetched at their texel centres, each filtered bilinearly in XY, and
-// blended here. That costs two fetches everywhere instead of one inside the level and
-// eight at a seam, and has no branch: a SIMD implementation (lavapipe runs both sides
-// of every divergent branch) pays for what it uses and no more.
-#define VXGI_SAMPLE_CLIP(tex, p, level, result)                                               \
-  {                                                                                           \
-    vec3 u_ = (p) / vxgiVoxelSize(level) - 0.5;                                               \
-    int n_ = clipMap.mapSize;                                                                 \
-    float z_ = floor(u_.z);                                                                   \
-    int z0_ = vxgiWrap(ivec3(0, 0, int(z_))).z;                                               \
-    int z1_ = (z0_ + 1) % n_;                                                                 \
-    vec2 xy_ = (u_.xy + 0.5) / float(n_);                                                     \
-    float zScale_ = 1.0 / float(n_ * clipMap.levelCount);                                     \
-    float zBase_ = float((level) * n_) + 0.5;                                                 \
-    vec4 s0_ = textureLod(tex, vec3(xy_, (zBase_ + float(z0_)) * zScale_), 0.0);              \
-    vec4 s1_ = textureLod(tex, vec3(xy_, (zBase_ + float(z1_)) * zScale_), 0.0);              \
-    result = mix(s0_, s1_, u_.z - z_);                                                        \
+// Z slices per clipped level in the stacked textures: mapSize + the guard slice.
+int vxgiLevelSlices() { return clipMap.mapSize + 1; }
+
+// Texel of toroidal voxel t (0..mapSize−1 per axis) of `level` in the stacked textures.
+ivec3 vxgiStorageTexel(ivec3 t, int level) { return t + ivec3(0, 0, level * vxgiLevelSlices()); }
+
+// Writers of a clipped level store slice 0 twice: its guard copy at z = mapSize lets one
+// trilinear fetch span the toroidal seam (clip_map_layout.h). `image` is a storage image.
+#define VXGI_STORE_CLIP(image, t, level, value)                                           \
+  {                                                                                       \
+    imageStore(image, vxgiStorageTexel(t, level), value);                                 \
+    if ((t).z == 0) imageStore(image, vxgiStorageTexel(t, level) + ivec3(0, 0, clipMap.mapSize), value); \
   }
+
+#if VXGI_CLIP_MAP_TEXTURES
+// Where world position p is in the stacked textures of a clipped level: X and Y as they
+// are (the sampler wraps them), Z wrapped into the level by hand. With the wrapped
+// texel-centre coordinate in [0, mapSize), a trilinear fetch reads slices z and z + 1 ≤
+// mapSize, the guard slice at the seam: one fetch per texture, never crossing into the
+// next level.
+vec3 vxgiClipCoord(vec3 p, int level) {
+  vec3 u = p / vxgiVoxelSize(level) - 0.5;  // voxel-centre coordinates
+  int n = clipMap.mapSize;
+  float z = floor(u.z);
+  float zWrapped = float(vxgiWrap(ivec3(0, 0, int(z))).z) + (u.z - z);
+  float slices = float(vxgiLevelSlices());
+  return vec3((u.xy + 0.5) / float(n), (float(level) * slices + zWrapped + 0.5) / (slices * float(clipMap.levelCount)));
+}
 
 // A sample of the mip pyramid at world position p and mip `mip` (fractional: the
 // hardware blends mips). The pyramid repeats with the coarsest level's extent.
@@ -139,7 +142,7 @@ struct VxgiSample {
   float density;
 };
 
-// Picks, per axis, the value of surfaces facing against r.
+// Picks, per axis, the density of surfaces facing against r (ambient-occlusion mode).
 vec3 vxgiFacing(vec3 r, vec4 pos, vec4 neg) {
 #if VXGI_DIRECTIONS == 6
   // Facing −r: along +X travel the surfaces facing −X stop the cone.
@@ -152,58 +155,59 @@ vec3 vxgiFacing(vec3 r, vec4 pos, vec4 neg) {
 // Moving one footprint along r advances |r_a| of one along each axis, so the optical
 // depth met is Σ |r_a|·τ_a: along an axis the axis's own value, and a wall stays just as
 // opaque to oblique cones (the longer path through it makes up for the smaller share).
-VxgiSample vxgiCombine(vec3 r, vec3 density, vec3 ex, vec3 ey, vec3 ez) {
+// x, y, z: (radiance × density, density) of the surfaces facing against r on each axis.
+VxgiSample vxgiCombine(vec3 r, vec4 x, vec4 y, vec4 z) {
   vec3 w = abs(r);
   VxgiSample s;
-  s.density = dot(w, density);
-  s.emittance = w.x * ex + w.y * ey + w.z * ez;
+  s.density = dot(w, vec3(x.a, y.a, z.a));
+  s.emittance = (w.x * x.rgb + w.y * y.rgb + w.z * z.rgb) * clipMap.emittanceDecode;
   return s;
 }
 
-VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
-  vec4 pos, neg = vec4(0.0);
-  VXGI_SAMPLE_CLIP(opacityClip0, p, level, pos);
+// The three facing directions against r, one fetch each at coordinate c (a level of
+// the stack, or the pyramid at `mip`). Along a cone r's signs are fixed, so the
+// branches are uniform wherever neighbouring invocations trace the same cone.
+#if VXGI_AO_MODE
 #if VXGI_DIRECTIONS == 6
-  VXGI_SAMPLE_CLIP(opacityClip1, p, level, neg);
-#endif
-  vec3 density = vxgiFacing(r, pos, neg);
-  vec4 ex = vec4(0.0), ey = vec4(0.0), ez = vec4(0.0);
-#if !VXGI_AO_MODE
-#if VXGI_DIRECTIONS == 6
-  if (r.x > 0.0) VXGI_SAMPLE_CLIP(emittanceClip3, p, level, ex) else VXGI_SAMPLE_CLIP(emittanceClip0, p, level, ex)
-  if (r.y > 0.0) VXGI_SAMPLE_CLIP(emittanceClip4, p, level, ey) else VXGI_SAMPLE_CLIP(emittanceClip1, p, level, ey)
-  if (r.z > 0.0) VXGI_SAMPLE_CLIP(emittanceClip5, p, level, ez) else VXGI_SAMPLE_CLIP(emittanceClip2, p, level, ez)
+#define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
+  {                                                                                        \
+    vec3 d_ = vxgiFacing(r, textureLod(voxels##suffix##0, c, mip), textureLod(voxels##suffix##1, c, mip)); \
+    s = vxgiCombine(r, vec4(0.0, 0.0, 0.0, d_.x), vec4(0.0, 0.0, 0.0, d_.y), vec4(0.0, 0.0, 0.0, d_.z)); \
+  }
 #else
-  VXGI_SAMPLE_CLIP(emittanceClip0, p, level, ex);
-  VXGI_SAMPLE_CLIP(emittanceClip1, p, level, ey);
-  VXGI_SAMPLE_CLIP(emittanceClip2, p, level, ez);
+#define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
+  {                                                                                        \
+    vec3 d_ = textureLod(voxels##suffix##0, c, mip).xyz;                                   \
+    s = vxgiCombine(r, vec4(0.0, 0.0, 0.0, d_.x), vec4(0.0, 0.0, 0.0, d_.y), vec4(0.0, 0.0, 0.0, d_.z)); \
+  }
 #endif
+#elif VXGI_DIRECTIONS == 6
+#define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
+  {                                                                                        \
+    vec4 x_, y_, z_;                                                                       \
+    if (r.x > 0.0) x_ = textureLod(voxels##suffix##3, c, mip); else x_ = textureLod(voxels##suffix##0, c, mip); \
+    if (r.y > 0.0) y_ = textureLod(voxels##suffix##4, c, mip); else y_ = textureLod(voxels##suffix##1, c, mip); \
+    if (r.z > 0.0) z_ = textureLod(voxels##suffix##5, c, mip); else z_ = textureLod(voxels##suffix##2, c, mip); \
+    s = vxgiCombine(r, x_, y_, z_);                                                        \
+  }
+#else
+#define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
+  s = vxgiCombine(r, textureLod(voxels##suffix##0, c, mip), textureLod(voxels##suffix##1, c, mip), \
+                  textureLod(voxels##suffix##2, c, mip));
 #endif
-  return vxgiCombine(r, density, ex.rgb * clipMap.emittanceDecode, ey.rgb * clipMap.emittanceDecode,
-                     ez.rgb * clipMap.emittanceDecode);
+
+VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
+  vec3 c = vxgiClipCoord(p, level);
+  VxgiSample s;
+  VXGI_FETCH_FACING(Clip, c, 0.0, r, s)
+  return s;
 }
 
 VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
-  vec3 uvw = vxgiMipCoord(p);
-  vec4 pos = textureLod(opacityMip0, uvw, mip), neg = vec4(0.0);
-#if VXGI_DIRECTIONS == 6
-  neg = textureLod(opacityMip1, uvw, mip);
-#endif
-  vec3 density = vxgiFacing(r, pos, neg);
-  vec3 ex = vec3(0.0), ey = vec3(0.0), ez = vec3(0.0);
-#if !VXGI_AO_MODE
-#if VXGI_DIRECTIONS == 6
-  ex = (r.x > 0.0 ? textureLod(emittanceMip3, uvw, mip) : textureLod(emittanceMip0, uvw, mip)).rgb;
-  ey = (r.y > 0.0 ? textureLod(emittanceMip4, uvw, mip) : textureLod(emittanceMip1, uvw, mip)).rgb;
-  ez = (r.z > 0.0 ? textureLod(emittanceMip5, uvw, mip) : textureLod(emittanceMip2, uvw, mip)).rgb;
-#else
-  ex = textureLod(emittanceMip0, uvw, mip).rgb;
-  ey = textureLod(emittanceMip1, uvw, mip).rgb;
-  ez = textureLod(emittanceMip2, uvw, mip).rgb;
-#endif
-#endif
-  float k = clipMap.emittanceDecode;
-  return vxgiCombine(r, density, ex * k, ey * k, ez * k);
+  vec3 c = vxgiMipCoord(p);
+  VxgiSample s;
+  VXGI_FETCH_FACING(Mip, c, mip, r, s)
+  return s;
 }
 
 // A filtered sample for a cone footprint of diameter `diameter` at p: the level whose
