@@ -20,7 +20,8 @@ gpu::ShaderSource shader(const char* file, const ClipMapFormat& format) {
 
 // The scratch volume of float sums: `channels` per voxel (4 per facing direction: rgb ×
 // coverage and coverage; 1 in ambient-occlusion mode), tiled `perRow` along X and the
-// rest along Z so no side exceeds 2048 texels (the usual maxImageDimension3D).
+// rest along Z so no side exceeds 2048 texels (the usual maxImageDimension3D). perRow is
+// a power of two so shaders find a channel's tile with masks and shifts (scratch.glsl).
 struct ScratchLayout {
   uint32_t channels = 0, perRow = 1;
   static ScratchLayout of(const ClipMapFormat& f) {
@@ -28,7 +29,7 @@ struct ScratchLayout {
     s.channels = f.directionCount() * (f.ambientOcclusionMode ? 1u : 4u);
     const uint32_t maxTiles = std::max(1u, 2048u / f.mapSize);
     s.perRow = 1;
-    while ((s.channels + s.perRow - 1) / s.perRow > maxTiles) ++s.perRow;
+    while ((s.channels + s.perRow - 1) / s.perRow > maxTiles) s.perRow *= 2;
     return s;
   }
   TextureDesc desc(const ClipMapFormat& f) const {

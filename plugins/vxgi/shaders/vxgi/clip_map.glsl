@@ -90,10 +90,11 @@ int vxgiFinestLevelAt(vec3 p, int from) {
   return -1;
 }
 
-ivec3 vxgiWrap(ivec3 c) {
-  int n = clipMap.mapSize;
-  return ((c % n) + n) % n;
-}
+// Toroidal position of world voxel c. mapSize is a power of two (validate() in
+// clip_map_layout.cpp), so a mask is the non-negative modulo, negative c included; an
+// integer % is a scalar division per lane on a CPU device (lavapipe has no vector
+// integer divide), and it was most of the downsampling's time.
+ivec3 vxgiWrap(ivec3 c) { return c & ivec3(clipMap.mapSize - 1); }
 
 // Z slices per clipped level in the stacked textures: mapSize + the guard slice.
 int vxgiLevelSlices() { return clipMap.mapSize + 1; }

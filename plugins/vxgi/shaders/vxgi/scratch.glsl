@@ -4,10 +4,11 @@
 #ifndef VXGI_SCRATCH_GLSL
 #define VXGI_SCRATCH_GLSL
 
-// Scratch texel of channel `channel` of toroidal voxel t.
+// Scratch texel of channel `channel` of toroidal voxel t. perRow is a power of two, so
+// masks and shifts stand in for % and / (a scalar division per lane on a CPU device).
 ivec3 vxgiScratchCoord(ivec3 t, int channel, int perRow) {
   int n = clipMap.mapSize;
-  return t + ivec3((channel % perRow) * n, 0, (channel / perRow) * n);
+  return t + ivec3((channel & (perRow - 1)) * n, 0, (channel >> findLSB(perRow)) * n);
 }
 
 #endif
