@@ -3,12 +3,15 @@
 // validation error).
 
 #include "bounce/image/image_buffer.h"
+#include "image/image_resample.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -65,6 +68,40 @@ TEST(BounceRenderCli, RendersPngAovsAndStats) {
   EXPECT_TRUE(lighting);
   EXPECT_TRUE(j["resources"].size() > 3);
   EXPECT_NE(r.output.find("Lighting"), std::string::npos) << r.output;  // the per-pass table
+}
+
+TEST(BounceRenderCli, ScreenPercentageRendersSmallerAndUpscalesToTheRequestedSize) {
+  // r.ScreenPercentage 50 at 64x48 is the scene rendered at 32x24 and upscaled: it equals a
+  // 32x24 render resampled to 64x48 (bilinear, between pixel centres) up to the PNGs'
+  // 8-bit rounding, and differs from a full 64x48 render.
+  const std::string full = scratch("full.png"), half = scratch("half.png"), small = scratch("small.png");
+  const std::string scene = "--scene content/cornell_box.gltf --gi Ambient ";
+  ASSERT_EQ(run(scene + "--width 64 --height 48 --out " + full).status, 0);
+  ASSERT_EQ(run(scene + "--width 32 --height 24 --out " + small).status, 0);
+  CommandResult r = run(scene + "--width 64 --height 48 --set r.ScreenPercentage=50 --out " + half);
+  ASSERT_EQ(r.status, 0) << r.output;
+  ImageBuffer fullImage, halfImage, smallImage;
+  std::string error;
+  ASSERT_TRUE(readPng(full, fullImage, &error)) << error;
+  ASSERT_TRUE(readPng(half, halfImage, &error)) << error;
+  ASSERT_TRUE(readPng(small, smallImage, &error)) << error;
+  ASSERT_EQ(halfImage.width, 64u);
+  ASSERT_EQ(halfImage.height, 48u);
+  const ImageBuffer upscaled = resampleBilinear(smallImage, 64, 48);
+  auto meanDifference = [](const ImageBuffer& a, const ImageBuffer& b, double* largest) {
+    double sum = 0.0;
+    *largest = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) {
+      const double d = std::abs(double(a.pixels[i]) - double(b.pixels[i]));
+      sum += d;
+      *largest = std::max(*largest, d);
+    }
+    return sum / double(a.pixels.size());
+  };
+  double largest = 0.0;
+  EXPECT_LT(meanDifference(halfImage, upscaled, &largest), 0.5 / 255.0);
+  EXPECT_LE(largest, 1.5 / 255.0);  // each side rounded once to 1/255
+  EXPECT_GT(meanDifference(halfImage, fullImage, &largest), 0.01);
 }
 
 struct BadInput {

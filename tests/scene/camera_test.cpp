@@ -1,7 +1,10 @@
 #include "bounce/scene/camera.h"
+#include "bounce/frame/frame_context.h"
 
 #include <gtest/gtest.h>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <utility>
 
 namespace bounce {
 namespace {
@@ -71,6 +74,42 @@ TEST(CameraProjection, WorldPointInFrontOfAPlacedCameraMapsToTheCentre) {
   EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-6f);
   EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-6f);
   EXPECT_GT(clip.w, 0.0f);
+}
+
+// Horizontal and vertical extent, in NDC, of a view-space point at unit distance: where
+// the camera's framing edge lands in an output of another aspect.
+glm::vec2 ndcOf(const FrameView& v, glm::vec3 viewPoint) { return glm::vec2(toNdc(v.projection, viewPoint)); }
+
+TEST(FrameViewFraming, AWideOutputKeepsTheVerticalFieldOfView) {
+  Camera camera;
+  camera.yfov = 0.7f;
+  const float top = std::tan(0.35f);  // the top edge of the authored frame at distance 1
+  for (auto [w, h] : {std::pair{128u, 128u}, std::pair{1280u, 720u}, std::pair{400u, 100u}}) {
+    const FrameView v = FrameView::fromCamera(camera, w, h);
+    EXPECT_NEAR(std::abs(ndcOf(v, {0, top, -1}).y), 1.0f, 1e-5f) << w << "x" << h;
+  }
+}
+
+TEST(FrameViewFraming, ANarrowOutputWidensTheVerticalFieldToKeepTheSides) {
+  // A square glTF camera (no aspectRatio) in a tall viewport, and a 16:9 camera in a square
+  // one: the authored frame's side edges stay at the image's sides, not outside them.
+  Camera square;
+  square.yfov = 0.7f;
+  const float side = std::tan(0.35f);
+  const FrameView tall = FrameView::fromCamera(square, 300, 600);
+  EXPECT_NEAR(std::abs(ndcOf(tall, {side, 0, -1}).x), 1.0f, 1e-5f);
+  EXPECT_NEAR(std::abs(ndcOf(tall, {0, side, -1}).y), 0.5f, 1e-5f);  // more shown above and below
+  Camera wide;
+  wide.yfov = 0.7f;
+  wide.aspect = 16.0f / 9.0f;
+  const FrameView squareView = FrameView::fromCamera(wide, 256, 256);
+  EXPECT_NEAR(std::abs(ndcOf(squareView, {side * 16.0f / 9.0f, 0, -1}).x), 1.0f, 1e-5f);
+  // Degenerate fields stay finite.
+  Camera extreme;
+  extreme.yfov = 3.0f;
+  const FrameView v = FrameView::fromCamera(extreme, 10, 1000);
+  EXPECT_TRUE(std::isfinite(v.projection[1][1]));
+  EXPECT_LE(v.camera.yfov, 3.1f);
 }
 
 }  // namespace

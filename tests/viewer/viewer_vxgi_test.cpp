@@ -27,9 +27,10 @@ using test::runViewer;
 using test::scratchDir;
 
 constexpr uint32_t kSize = 96;
+// Fixed resolution (no dynamic resolution): the screenshots are compared across frames.
 const std::string kSmallVxgi =
     "--gi VXGI --width 96 --height 96 --set r.VXGI.MapSize=32 "
-    "--set r.VXGI.StackLevels=3 --set r.VXGI.DiffuseCones=4";
+    "--set r.VXGI.StackLevels=3 --set r.VXGI.DiffuseCones=4 --set r.DynamicRes.OperationMode=0";
 
 /// Fraction of pixels brighter than `level` in some channel.
 double litFraction(const ImageBuffer& image, float level = 0.02f) {

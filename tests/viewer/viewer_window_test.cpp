@@ -5,13 +5,16 @@
 #include "support/x_display.h"
 #include "viewer/viewer_session.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -77,8 +80,11 @@ class ViewerWindowTest : public ::testing::Test {
                           << (dir_ / "after-errors.png").string()
                           << "\n"
                              "quit\n";
-    session_ = runViewer("--scene content/cornell_box.gltf --gi Ambient --width 320 --height 240 --script " +
-                         script.string());
+    // Fixed resolution (no dynamic resolution): the screenshots are compared across frames.
+    session_ = runViewer(
+        "--scene content/cornell_box.gltf --gi Ambient --width 320 --height 240 "
+        "--set r.DynamicRes.OperationMode=0 --script " +
+        script.string());
   }
   static void TearDownTestSuite() { display_.reset(); }
 
@@ -173,6 +179,55 @@ TEST_F(ViewerWindowTest, BadConsoleLinesAreReportedAndTheScriptGoesOn) {
   EXPECT_NE(session_.output.find("'\\x1B[31mred'"), std::string::npos) << session_.output;
   // The screenshot after the bad lines exists: the viewer kept running the script.
   EXPECT_TRUE(fs::exists(dir_ / "after-errors.png")) << session_.output;
+}
+
+// The `frames N` line of a script's output: "frames N: R frames/s (...), last at WxH (P% of
+// the VWxVH viewport)". Returns false when it is missing.
+struct FrameRunLine {
+  double rate = 0.0;
+  uint32_t width = 0, height = 0, viewportWidth = 0, viewportHeight = 0;
+};
+std::optional<FrameRunLine> frameRun(const std::string& output, uint32_t frames) {
+  const std::string key = fmt::format("frames {}: ", frames);
+  const size_t at = output.find(key);
+  if (at == std::string::npos) return std::nullopt;
+  FrameRunLine f;
+  double ms = 0.0, percent = 0.0;
+  if (std::sscanf(output.c_str() + at + key.size(),
+                  "%lf frames/s (%lf ms each), last at %ux%u (%lf%% of the %ux%u", &f.rate, &ms, &f.width,
+                  &f.height, &percent, &f.viewportWidth, &f.viewportHeight) != 7)
+    return std::nullopt;
+  return f;
+}
+
+TEST(ViewerResolution,
+     ScreenPercentageScalesTheSceneAndDynamicResolutionMeetsAnImpossibleBudgetAtItsMinimum) {
+  test::XDisplay display;
+  if (!display.available()) GTEST_SKIP() << display.reason();
+  const fs::path dir = scratchDir();
+  const fs::path script = dir / "resolution.txt";
+  // Without the UI the scene is the whole 200x100 window. A fixed 50%, then dynamic
+  // resolution with a budget no frame meets: it must fall to its minimum (and stay there).
+  std::ofstream(script) << "ui off\n"
+                           "r.DynamicRes.OperationMode 0\n"
+                           "r.ScreenPercentage 50\n"
+                           "frames 2\n"
+                           "r.DynamicRes.OperationMode 2\n"
+                           "r.DynamicRes.FrameTimeBudgetMs 1\n"
+                           "r.DynamicRes.MinScreenPercentage 20\n"
+                           "frames 12\n"
+                           "quit\n";
+  const CommandResult r = runViewer(
+      "--scene content/cornell_box.gltf --gi Ambient --width 200 --height 100 --script " + script.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::optional<FrameRunLine> fixed = frameRun(r.output, 2), dynamic = frameRun(r.output, 12);
+  ASSERT_TRUE(fixed && dynamic) << r.output;
+  EXPECT_EQ(fixed->viewportWidth, 200u);
+  EXPECT_EQ(fixed->width, 100u);
+  EXPECT_EQ(fixed->height, 50u);
+  EXPECT_GT(fixed->rate, 0.0);
+  EXPECT_EQ(dynamic->width, 40u) << r.output;  // 20% of 200
+  EXPECT_EQ(dynamic->height, 20u);
 }
 
 // Bad input stops before any window opens: no X server needed.

@@ -94,10 +94,9 @@ void ConsolePanel::submit() {
   run_(line);
 }
 
-void ConsolePanel::draw(bool* open) {
-  ImGui::SetNextWindowPos(ImVec2(10, ImGui::GetIO().DisplaySize.y * 0.65f), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(ImGui::GetIO().DisplaySize.x * 0.6f, ImGui::GetIO().DisplaySize.y * 0.33f),
-                           ImGuiCond_FirstUseEver);
+void ConsolePanel::draw(const DockLayout& layout, bool* open) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  placePanel(layout, DockedPanel::Console, 10, display.y * 0.65f, display.x * 0.6f, display.y * 0.33f);
   if (!ImGui::Begin("Console", open)) {
     ImGui::End();
     return;

@@ -5,6 +5,7 @@
 
 #include "bounce/config/console.h"
 #include "console_log.h"
+#include "dock_layout.h"
 
 #include <array>
 #include <functional>
@@ -18,7 +19,7 @@ namespace bounce::viewer {
 class ConsolePanel {
  public:
   ConsolePanel(ConsoleLog& log, const Console& console, std::function<void(const std::string&)> run);
-  void draw(bool* open);
+  void draw(const DockLayout& layout, bool* open);
 
   /// Completes the first word of `line` against variable and command names: the single
   /// match (followed by a space) or the longest common prefix of several; `candidates`

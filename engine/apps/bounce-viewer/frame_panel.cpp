@@ -43,8 +43,7 @@ void passBars(const RenderedFrame& frame) {
 
 void drawFramePanel(Viewer& viewer, bool* open) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(10, 300), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, display.y * 0.35f), ImGuiCond_FirstUseEver);
+  placePanel(viewer.dockLayout(), DockedPanel::Frame, 10, 300, 360, display.y * 0.35f);
   if (!ImGui::Begin("Frame", open)) {
     ImGui::End();
     return;
@@ -54,6 +53,15 @@ void drawFramePanel(Viewer& viewer, bool* open) {
   for (const Engine::HookTiming& h : frame.cpu) cpu += h.milliseconds;
   const VkExtent2D e = viewer.windowExtent();
   ImGui::Text("%ux%u  GPU %.2f ms  hooks (CPU) %.2f ms", e.width, e.height, frame.gpu.frameMilliseconds, cpu);
+  const float wall = viewer.wallFrameMs();
+  const DockLayout& layout = viewer.dockLayout();
+  ImGui::Text("scene %ux%u (%.0f%% of %.0fx%.0f)  %.1f frames/s", frame.renderWidth, frame.renderHeight,
+              layout.scene.width > 0.0f ? 100.0f * float(frame.renderWidth) / layout.scene.width : 0.0f,
+              layout.scene.width, layout.scene.height, wall > 0.0f ? 1000.0f / wall : 0.0f);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "r.DynamicRes.OperationMode 0 fixes the resolution at r.ScreenPercentage; "
+        "r.DynamicRes.FrameTimeBudgetMs sets the frame time dynamic resolution aims for.");
   const std::vector<float> history(viewer.frameHistory().begin(), viewer.frameHistory().end());
   if (!history.empty())
     ImGui::PlotLines("##history", history.data(), int(history.size()), 0, "GPU ms per frame", 0.0f, FLT_MAX,

@@ -20,6 +20,7 @@ struct PanelVisibility {
   bool scene = true;
   bool postProcess = false;
   bool frame = true;
+  bool docked = true;  ///< panels in columns beside the scene, not over it (dock_layout.h)
 };
 
 /// Menu bar: panel toggles, save settings, screenshot, camera reset, quit.

@@ -46,8 +46,7 @@ PostProcessValue valueOf(const CVar& c) {
 }  // namespace
 
 void drawPostProcessPanel(Viewer& viewer, bool* open) {
-  ImGui::SetNextWindowPos(ImVec2(320, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 300), ImGuiCond_FirstUseEver);
+  placePanel(viewer.dockLayout(), DockedPanel::PostProcess, 320, 30, 340, 300);
   if (!ImGui::Begin("Post-process volumes", open)) {
     ImGui::End();
     return;

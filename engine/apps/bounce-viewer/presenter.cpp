@@ -158,7 +158,41 @@ void Presenter::uploadScene(const ImageBuffer& scene) {
   }
 }
 
-void Presenter::record(uint32_t index, VkExtent2D sceneSize,
+void Presenter::recordScaledScene(VkCommandBuffer cmd, VkExtent2D sceneSize, VkRect2D sceneRect) {
+  if (sceneImageSize_.width != sceneSize.width || sceneImageSize_.height != sceneSize.height) {
+    TextureDesc desc;
+    desc.format = swapchain_->format();
+    desc.width = sceneSize.width;
+    desc.height = sceneSize.height;
+    // The previous frame's blit may still read the old image: one frame is in flight at
+    // most, and present() waited for it before recording.
+    sceneImage_ = gpu::Image(device_, desc, VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                             "viewer.scene");
+    sceneImageSize_ = sceneSize;
+  }
+  gpu::imageLayoutBarrier(cmd, sceneImage_.handle(), VK_IMAGE_LAYOUT_UNDEFINED,
+                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, 0,
+                          VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  VkBufferImageCopy copy{};
+  copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  copy.imageExtent = {sceneSize.width, sceneSize.height, 1};
+  vkCmdCopyBufferToImage(cmd, staging_.handle(), sceneImage_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         1, &copy);
+  gpu::imageLayoutBarrier(cmd, sceneImage_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                          VK_ACCESS_2_TRANSFER_READ_BIT);
+  VkImageBlit blit{};
+  blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.srcOffsets[1] = {int32_t(sceneSize.width), int32_t(sceneSize.height), 1};
+  blit.dstOffsets[0] = {sceneRect.offset.x, sceneRect.offset.y, 0};
+  blit.dstOffsets[1] = {sceneRect.offset.x + int32_t(sceneRect.extent.width),
+                        sceneRect.offset.y + int32_t(sceneRect.extent.height), 1};
+  vkCmdBlitImage(cmd, sceneImage_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, composite_.handle(),
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+}
+
+void Presenter::record(uint32_t index, VkExtent2D sceneSize, VkRect2D sceneRect,
                        const std::function<void(VkCommandBuffer)>& drawOverlay, bool readBack) {
   VkCommandBuffer cmd = commandBuffer_;
   const VkExtent2D e = swapchain_->extent();
@@ -170,9 +204,17 @@ void Presenter::record(uint32_t index, VkExtent2D sceneSize,
   gpu::imageLayoutBarrier(cmd, composite_.handle(), VK_IMAGE_LAYOUT_UNDEFINED,
                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
                           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-  const bool fits = sceneSize.width == e.width && sceneSize.height == e.height;
+  // The rect within the window (a resize may have shrunk the window under it).
+  sceneRect.offset.x = std::clamp(sceneRect.offset.x, 0, int32_t(e.width) - 1);
+  sceneRect.offset.y = std::clamp(sceneRect.offset.y, 0, int32_t(e.height) - 1);
+  sceneRect.extent.width = std::clamp(sceneRect.extent.width, 1u, e.width - uint32_t(sceneRect.offset.x));
+  sceneRect.extent.height = std::clamp(sceneRect.extent.height, 1u, e.height - uint32_t(sceneRect.offset.y));
+  const bool unscaled =
+      sceneSize.width == sceneRect.extent.width && sceneSize.height == sceneRect.extent.height;
+  const bool fits = unscaled && sceneRect.offset.x == 0 && sceneRect.offset.y == 0 &&
+                    sceneSize.width == e.width && sceneSize.height == e.height;
   if (!fits) {
-    // A debug view of another size (or the frame before a resize): grey around it.
+    // Panels beside the scene, or the frame before a resize: grey around it.
     VkClearColorValue grey{{0.1f, 0.1f, 0.1f, 1.0f}};
     VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, composite_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &grey, 1, &range);
@@ -182,12 +224,17 @@ void Presenter::record(uint32_t index, VkExtent2D sceneSize,
                             VK_ACCESS_2_TRANSFER_WRITE_BIT);
   }
   if (staging_ && sceneSize.width && sceneSize.height) {
-    VkBufferImageCopy copy{};
-    copy.bufferRowLength = sceneSize.width;  // the scene may be wider than the window
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    copy.imageExtent = {std::min(sceneSize.width, e.width), std::min(sceneSize.height, e.height), 1};
-    vkCmdCopyBufferToImage(cmd, staging_.handle(), composite_.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           1, &copy);
+    if (unscaled) {
+      VkBufferImageCopy copy{};
+      copy.bufferRowLength = sceneSize.width;  // the scene may be wider than the window
+      copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      copy.imageOffset = {sceneRect.offset.x, sceneRect.offset.y, 0};
+      copy.imageExtent = {sceneRect.extent.width, sceneRect.extent.height, 1};
+      vkCmdCopyBufferToImage(cmd, staging_.handle(), composite_.handle(),
+                             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    } else {
+      recordScaledScene(cmd, sceneSize, sceneRect);
+    }
   }
 
   VkRenderPassBeginInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
@@ -222,8 +269,8 @@ void Presenter::record(uint32_t index, VkExtent2D sceneSize,
   gpu::check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
 }
 
-bool Presenter::present(const ImageBuffer& scene, const std::function<void(VkCommandBuffer)>& drawOverlay,
-                        WindowPixels* screenshot) {
+bool Presenter::present(const ImageBuffer& scene, VkRect2D sceneRect,
+                        const std::function<void(VkCommandBuffer)>& drawOverlay, WindowPixels* screenshot) {
   const VkDevice dev = device_.handle();
   VkFence fence = frameDone_.get();
   // One frame in flight: the renderer waits for its own frames anyway, so overlapping
@@ -235,7 +282,7 @@ bool Presenter::present(const ImageBuffer& scene, const std::function<void(VkCom
 
   if (!scene.empty()) uploadScene(scene);
   gpu::check(vkResetCommandBuffer(commandBuffer_, 0), "vkResetCommandBuffer");
-  record(index, {scene.width, scene.height}, drawOverlay, screenshot != nullptr);
+  record(index, {scene.width, scene.height}, sceneRect, drawOverlay, screenshot != nullptr);
 
   VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
   wait.semaphore = imageAcquired_.get();

@@ -41,18 +41,20 @@ class Presenter {
   /// The render pass the overlay draws in (its pipelines are created against it).
   VkRenderPass overlayPass() const { return overlayPass_.get(); }
 
-  /// Shows `scene` (display-encoded RGBA floats in 0..1; drawn at the top-left, the rest
-  /// cleared when its size differs from the window's) with `drawOverlay` recorded inside
-  /// the overlay render pass. Fills `screenshot` when given. Returns false when the
-  /// swapchain is out of date: call resize() with the window's size.
-  bool present(const ImageBuffer& scene, const std::function<void(VkCommandBuffer)>& drawOverlay,
-               WindowPixels* screenshot);
+  /// Shows `scene` (display-encoded RGBA floats in 0..1) scaled to fill `sceneRect` of the
+  /// window (bilinear; the rest cleared grey) with `drawOverlay` recorded inside the
+  /// overlay render pass at window resolution. Fills `screenshot` when given. Returns
+  /// false when the swapchain is out of date: call resize() with the window's size.
+  bool present(const ImageBuffer& scene, VkRect2D sceneRect,
+               const std::function<void(VkCommandBuffer)>& drawOverlay, WindowPixels* screenshot);
 
  private:
   void createSizedResources();
   void uploadScene(const ImageBuffer& scene);
-  void record(uint32_t imageIndex, VkExtent2D sceneSize,
+  void record(uint32_t imageIndex, VkExtent2D sceneSize, VkRect2D sceneRect,
               const std::function<void(VkCommandBuffer)>& drawOverlay, bool readBack);
+  /// Copies the staged scene into `sceneImage_` and blits it, filtered, into the rect.
+  void recordScaledScene(VkCommandBuffer cmd, VkExtent2D sceneSize, VkRect2D sceneRect);
   bool bgra() const;
 
   const gpu::Device& device_;
@@ -72,6 +74,8 @@ class Presenter {
   gpu::Buffer readback_;
   // Sized with the scene image.
   gpu::Buffer staging_;
+  gpu::Image sceneImage_;  ///< the scene at its render size, the source of the scaling blit
+  VkExtent2D sceneImageSize_{0, 0};
 };
 
 }  // namespace bounce::viewer

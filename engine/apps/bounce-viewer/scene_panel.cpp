@@ -63,8 +63,8 @@ std::optional<ObjectParameterValue> parameterWidget(const ObjectParameterRegistr
 
 void drawScenePanel(Viewer& viewer, bool* open) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 430, display.y * 0.5f + 40), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420, display.y * 0.45f - 50), ImGuiCond_FirstUseEver);
+  placePanel(viewer.dockLayout(), DockedPanel::Scene, display.x - 430, display.y * 0.5f + 40, 420,
+             display.y * 0.45f - 50);
   if (!ImGui::Begin("Scene", open)) {
     ImGui::End();
     return;

@@ -111,8 +111,7 @@ bool applySetting(Viewer& viewer, CVar& cvar, const std::string& text) {
 
 void SettingsPanel::draw(Viewer& viewer, bool* open) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 430, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420, display.y * 0.5f), ImGuiCond_FirstUseEver);
+  placePanel(viewer.dockLayout(), DockedPanel::Settings, display.x - 430, 30, 420, display.y * 0.5f);
   if (!ImGui::Begin("Settings", open)) {
     ImGui::End();
     return;

@@ -30,6 +30,8 @@ void drawMainMenu(Viewer& viewer, PanelVisibility& panels) {
     ImGui::MenuItem("Frame", nullptr, &panels.frame);
     ImGui::MenuItem("Console", nullptr, &panels.console);
     ImGui::Separator();
+    ImGui::MenuItem("Dock at the sides", nullptr, &panels.docked);
+    ImGui::Separator();
     if (ImGui::MenuItem("Hide all", "F1")) viewer.setUiVisible(false);
     ImGui::EndMenu();
   }
@@ -50,8 +52,7 @@ void drawMainMenu(Viewer& viewer, PanelVisibility& panels) {
 }
 
 void drawViewPanel(Viewer& viewer, bool* open) {
-  ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(300, 260), ImGuiCond_FirstUseEver);
+  placePanel(viewer.dockLayout(), DockedPanel::Views, 10, 30, 300, 260);
   if (!ImGui::Begin("View", open)) {
     ImGui::End();
     return;

@@ -1,5 +1,7 @@
 #include "viewer.h"
 
+#include "image/image_resample.h"
+
 #include "bounce/core/names.h"
 #include "bounce/gpu/shader_compiler.h"
 #include "bounce/gpu/vulkan_error.h"
@@ -11,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace bounce::viewer {
@@ -167,6 +170,36 @@ void Viewer::runLine(const std::string& line, const std::string& origin) {
 
 void Viewer::renderFrames(uint32_t count) { framesToRender_ = std::max(framesToRender_, count); }
 
+void Viewer::measureFrames(uint32_t count) {
+  renderFrames(count);
+  frameRun_ = FrameRun{framesToRender_, std::chrono::steady_clock::now(), {}};
+}
+
+void Viewer::reportFrameRun() {
+  if (!frameRun_ || framesToRender_ > 0) return;
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - frameRun_->start).count();
+  const double rate = seconds > 0.0 ? double(frameRun_->frames) / seconds : 0.0;
+  const VkExtent2D r = frameRun_->lastRender;
+  const std::string line = fmt::format(
+      "frames {}: {:.2f} frames/s ({:.1f} ms each), last at {}x{} ({:.0f}% of the {}x{} viewport)",
+      frameRun_->frames, rate, seconds * 1000.0 / std::max(1u, frameRun_->frames), r.width, r.height,
+      dynamicResolution_.current(), uint32_t(layout_.scene.width), uint32_t(layout_.scene.height));
+  log_.add(LineKind::Output, line);
+  fmt::print("bounce-viewer: {}\n", line);
+  std::fflush(stdout);
+  frameRun_.reset();
+}
+
+float Viewer::nextScreenPercentage() {
+  const RendererSettings& s = engine_->rendererSettings();
+  if (s.dynamicResOperationMode.get() == 0) return s.screenPercentage.get();
+  const DynamicResolutionLimits limits{.budgetMs = s.dynamicResFrameTimeBudgetMs.get(),
+                                       .minPercent = s.dynamicResMinScreenPercentage.get(),
+                                       .maxPercent = s.dynamicResMaxScreenPercentage.get()};
+  return dynamicResolution_.next(wallFrameMs_, limits);
+}
+
 void Viewer::requestScreenshot(std::string path) {
   if (path.empty()) path = fmt::format("bounce-screenshot-{:03}.png", ++screenshotCount_);
   pendingScreenshot_ = std::move(path);
@@ -293,7 +326,12 @@ void Viewer::loop() {
     drawUi();
     imgui_->endFrame();
     renderAndPresent();
+    const Clock::time_point shown = Clock::now();
+    if (lastPresent_ != Clock::time_point{})
+      wallFrameMs_ = std::chrono::duration<float, std::milli>(shown - lastPresent_).count();
+    lastPresent_ = shown;
     if (framesToRender_ > 0) --framesToRender_;
+    reportFrameRun();
   }
 }
 
@@ -340,6 +378,11 @@ void Viewer::updateCamera(float seconds) {
 }
 
 void Viewer::drawUi() {
+  const ImGuiIO& io = ImGui::GetIO();
+  // The menu bar's height is ImGui's frame height: the layout is known before the menu
+  // draws, so every panel of this frame uses it.
+  layout_ = DockLayout::compute(io.DisplaySize.x, io.DisplaySize.y, ImGui::GetFrameHeight(), panels_,
+                                uiVisible_, panels_.docked);
   if (!uiVisible_) return;
   drawMainMenu(*this, panels_);
   if (panels_.views) drawViewPanel(*this, &panels_.views);
@@ -347,7 +390,7 @@ void Viewer::drawUi() {
   if (panels_.scene) drawScenePanel(*this, &panels_.scene);
   if (panels_.postProcess) drawPostProcessPanel(*this, &panels_.postProcess);
   if (panels_.frame) drawFramePanel(*this, &panels_.frame);
-  if (panels_.console) consolePanel_->draw(&panels_.console);
+  if (panels_.console) consolePanel_->draw(layout_, &panels_.console);
   drawToasts(log_);
 }
 
@@ -362,17 +405,32 @@ void Viewer::reportChangedProblems(const RenderedFrame& frame) {
 
 void Viewer::renderAndPresent() {
   const VkExtent2D extent = presenter_->extent();
+  // The scene's rect in framebuffer pixels (the layout is in ImGui's display units).
+  const ImGuiIO& io = ImGui::GetIO();
+  const float sx = io.DisplayFramebufferScale.x > 0.0f ? io.DisplayFramebufferScale.x : 1.0f;
+  const float sy = io.DisplayFramebufferScale.y > 0.0f ? io.DisplayFramebufferScale.y : 1.0f;
+  VkRect2D rect{{int32_t(std::lround(layout_.scene.x * sx)), int32_t(std::lround(layout_.scene.y * sy))},
+                {uint32_t(std::max(1L, std::lround(layout_.scene.width * sx))),
+                 uint32_t(std::max(1L, std::lround(layout_.scene.height * sy)))}};
+  if (layout_.scene.empty()) rect = {{0, 0}, extent};
   FrameOutputs outputs;
   outputs.display = true;
+  // The scene renders below the viewport's size and the presenter scales it up on the
+  // GPU; the UI draws at window resolution on top.
+  outputs.screenPercentage = nextScreenPercentage();
+  outputs.keepRenderResolution = true;
   if (pendingScreenshot_) outputs.aovs.push_back("radiance");
-  const FrameView view = FrameView::fromCamera(camera_->camera(), extent.width, extent.height);
+  const FrameView view = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
   std::optional<ImageBuffer> hdr;
   try {
     RenderedFrame frame = renderer_->render(view, outputs, frameIndex_++);
     reportChangedProblems(frame);
     if (auto it = frame.images.find("display"); it != frame.images.end() && !it->second.empty())
       displayed_ = std::move(it->second);
-    if (auto it = frame.images.find("radiance"); it != frame.images.end()) hdr = std::move(it->second);
+    // The HDR screenshot has the viewport's size, as the PNG shows it.
+    if (auto it = frame.images.find("radiance"); it != frame.images.end())
+      hdr = resampleBilinear(it->second, rect.extent.width, rect.extent.height);
+    if (frameRun_) frameRun_->lastRender = {frame.renderWidth, frame.renderHeight};
     frame.images.clear();
     frameMs_.push_back(float(frame.gpu.frameMilliseconds));
     if (frameMs_.size() > 240) frameMs_.pop_front();
@@ -388,7 +446,7 @@ void Viewer::renderAndPresent() {
   }
   WindowPixels pixels;
   const bool current = presenter_->present(
-      displayed_, [this](VkCommandBuffer cmd) { imgui_->record(cmd); },
+      displayed_, rect, [this](VkCommandBuffer cmd) { imgui_->record(cmd); },
       pendingScreenshot_ ? &pixels : nullptr);
   if (pendingScreenshot_) {
     if (pixels.rgba.empty()) {

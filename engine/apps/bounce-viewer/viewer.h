@@ -9,6 +9,8 @@
 #include "camera_controller.h"
 #include "console_log.h"
 #include "console_panel.h"
+#include "dock_layout.h"
+#include "dynamic_resolution.h"
 #include "imgui_layer.h"
 #include "panels.h"
 #include "presenter.h"
@@ -50,6 +52,9 @@ class Viewer {
   void runLine(const std::string& line, const std::string& origin = {});
   /// The script waits until this many more frames have been shown.
   void renderFrames(uint32_t count);
+  /// renderFrames(count), then prints the frame rate those frames were shown at (the
+  /// script's `frames N`: a benchmark of the interactive rate).
+  void measureFrames(uint32_t count);
   /// Writes the next frame as shown (UI included) to `path` (PNG), and its HDR radiance
   /// before tone mapping beside it (same name, .exr).
   void requestScreenshot(std::string path);
@@ -76,6 +81,10 @@ class Viewer {
   ConsoleLog& log() { return log_; }
   const RenderedFrame& lastFrame() const { return lastFrame_; }
   const std::deque<float>& frameHistory() const { return frameMs_; }
+  /// Where the panels and the scene are this frame.
+  const DockLayout& dockLayout() const { return layout_; }
+  /// Wall-clock milliseconds of the last frame shown (render, UI and presentation).
+  float wallFrameMs() const { return wallFrameMs_; }
   const gpu::Device& device() const { return *device_; }
   VkExtent2D windowExtent() const { return presenter_->extent(); }
 
@@ -126,6 +135,20 @@ class Viewer {
   ImageBuffer displayed_;  // the last good frame: shown again when one fails
   RenderedFrame lastFrame_;
   std::deque<float> frameMs_;
+  DockLayout layout_;
+  DynamicResolution dynamicResolution_;
+  float wallFrameMs_ = 0.0f;
+  std::chrono::steady_clock::time_point lastPresent_{};
+  // A `frames N` run being measured: frames left and when it started.
+  struct FrameRun {
+    uint32_t frames = 0;
+    std::chrono::steady_clock::time_point start;
+    VkExtent2D lastRender{};
+  };
+  std::optional<FrameRun> frameRun_;
+  /// The screen percentage for the next frame: dynamic resolution's, or r.ScreenPercentage.
+  float nextScreenPercentage();
+  void reportFrameRun();
   std::set<std::string> reportedProblems_;  // reported once, again only after they cleared
   std::chrono::steady_clock::time_point lastReloadCheck_{};
   std::chrono::steady_clock::time_point lastFrameTime_{};

@@ -46,7 +46,8 @@ void Viewer::registerCommands() {
          return r;
        }});
   console.addCommand({.name = "frames",
-                      .help = "frames N: show N more frames before the script goes on.",
+                      .help = "frames N: show N more frames before the script goes on, then print "
+                              "the frame rate they were shown at.",
                       .run = [this](const std::vector<std::string>& args) {
                         uint32_t n = 0;
                         const std::string text = args.empty() ? "" : args[0];
@@ -54,7 +55,7 @@ void Viewer::registerCommands() {
                         if (args.size() != 1 || ec != std::errc() || end != text.data() + text.size() ||
                             n == 0 || n > 100000)
                           return fail("usage: frames N (1..100000)");
-                        renderFrames(n);
+                        measureFrames(n);
                         return ok();
                       }});
   console.addCommand({.name = "screenshot",

@@ -1,6 +1,7 @@
 #include "bounce/frame/frame_context.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace bounce {
 
@@ -12,8 +13,19 @@ FrameView FrameView::fromCamera(const Camera& camera, uint32_t width, uint32_t h
   // The image's aspect ratio wins over the glTF camera's own: the output size is what
   // the user asked for, and a stretched image would be wrong for every pixel.
   v.camera.aspect = 0.0f;
+  // The framing survives any aspect: an output wider than the camera's own aspect (1 when
+  // the glTF gives none, as glTF viewers assume) keeps the vertical field of view and
+  // shows more at the sides; a narrower one widens the vertical field of view until the
+  // horizontal one is the camera's again, so nothing the camera was aimed at is cut off.
+  const float authored = camera.aspect > 0.0f && std::isfinite(camera.aspect) ? camera.aspect : 1.0f;
+  const float output = float(v.width) / float(v.height);
+  if (output < authored) {
+    const float halfTan = std::tan(0.5f * camera.yfov) * authored / output;
+    // Below π: a camera whose horizontal field would need more than 180° keeps its own.
+    if (std::isfinite(halfTan) && halfTan > 0.0f) v.camera.yfov = std::min(2.0f * std::atan(halfTan), 3.1f);
+  }
   v.view = camera.view();
-  v.projection = v.camera.projection(float(v.width) / float(v.height));
+  v.projection = v.camera.projection(output);
   v.viewProjection = v.projection * v.view;
   v.inverseViewProjection = glm::inverse(v.viewProjection);
   v.position = camera.position();

@@ -31,6 +31,11 @@ using Readbacks = std::map<std::string, Readback>;
 struct FrameOutputs {
   std::vector<std::string> aovs;  ///< names registered in the AovRegistry
   bool display = false;           ///< read back the displayed image as "display"
+  /// Percentage of the view's width and height the scene renders at; 0: r.ScreenPercentage.
+  float screenPercentage = 0.0f;
+  /// Hand the images back at the size the scene rendered at (the caller scales them, as the
+  /// viewer does on the GPU), instead of upscaled to the view's size.
+  bool keepRenderResolution = false;
 };
 
 class DeferredPipeline {

@@ -1,9 +1,12 @@
 #include "renderer/renderer.h"
 
 #include "bounce/core/log.h"
+#include "image/image_resample.h"
 
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -33,11 +36,32 @@ Renderer::Renderer(Engine& engine, const gpu::Device& device, RendererOptions op
 
 Renderer::~Renderer() { vkDeviceWaitIdle(device_.handle()); }
 
-RenderedFrame Renderer::render(const FrameView& view, const FrameOutputs& outputs, uint64_t frameIndex) {
+namespace {
+
+/// `output` at `percent` of its width and height: the same camera and matrices (the
+/// aspect is the output's, so the upscaled image is not stretched by rounding).
+FrameView renderView(const FrameView& output, float percent) {
+  FrameView v = output;
+  if (!(percent > 0.0f) || !std::isfinite(percent)) return v;
+  const float scale = std::clamp(percent, 1.0f, 400.0f) / 100.0f;
+  v.width = std::max(1u, uint32_t(std::lround(float(output.width) * scale)));
+  v.height = std::max(1u, uint32_t(std::lround(float(output.height) * scale)));
+  return v;
+}
+
+}  // namespace
+
+RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& outputs,
+                               uint64_t frameIndex) {
   const Scene* scene = engine_.scene();
   if (!scene) throw std::logic_error("Renderer::render without a scene");
   scene_->update(*scene);
+  const float percent = outputs.screenPercentage > 0.0f ? outputs.screenPercentage
+                                                        : engine_.rendererSettings().screenPercentage.get();
+  const FrameView view = renderView(outputView, percent);
   RenderedFrame out;
+  out.renderWidth = view.width;
+  out.renderHeight = view.height;
   PostProcessSettings pp = PostProcessSettings::blend(*scene, engine_.cvars(), view.position, &out.warnings);
   FrameContext frame{*scene, engine_.cvars(), view, pp, frameIndex, engine_.technique()};
   RenderGraph graph;
@@ -52,7 +76,9 @@ RenderedFrame Renderer::render(const FrameView& view, const FrameOutputs& output
   auto want = [&](const std::string& name) {
     auto it = readbacks_.find(name);
     if (it == readbacks_.end()) return;
-    out.images[name] = convert(name, it->second, view);
+    ImageBuffer image = convert(name, it->second, view);
+    if (!outputs.keepRenderResolution) image = resampleBilinear(image, outputView.width, outputView.height);
+    out.images[name] = std::move(image);
   };
   if (outputs.display) want("display");
   for (const std::string& aov : outputs.aovs) want(aov);

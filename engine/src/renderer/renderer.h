@@ -34,6 +34,8 @@ struct RenderedFrame {
   /// RGB, or one channel for depth in metres along the view axis, 0 where nothing was hit).
   std::map<std::string, ImageBuffer> images;
   std::vector<std::string> warnings;  ///< post-process volume problems
+  /// The size the scene rendered at (the view's size × the screen percentage).
+  uint32_t renderWidth = 0, renderHeight = 0;
 };
 
 class Renderer {

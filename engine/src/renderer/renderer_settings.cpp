@@ -68,6 +68,48 @@ RendererSettings::RendererSettings(CVarRegistry& cvars)
                "traversal in compute shaders, every device) or Hardware (VK_KHR_ray_query; not built yet: "
                "falls back to Software with a warning).",
            .enumNames = {"Auto", "Software", "Hardware"},
-           .category = "Renderer|Ray tracing"})) {}
+           .category = "Renderer|Ray tracing"})),
+      screenPercentage(cvars.add<float>(
+          {.name = "r.ScreenPercentage",
+           .defaultValue = 100.0f,
+           .help = "Percentage of the output's width and height the scene renders at; the image is "
+                   "upscaled (bilinear) to the output. Below 100 trades sharpness for time, as in Unreal.",
+           .min = 5.0,
+           .max = 200.0,
+           .outOfRange = RangePolicy::Clamp,
+           .category = "Renderer|Resolution"})),
+      dynamicResOperationMode(cvars.add<int32_t>(
+          {.name = "r.DynamicRes.OperationMode",
+           .defaultValue = 2,
+           .help = "Dynamic resolution in interactive apps (the viewer): 0 off (r.ScreenPercentage "
+                   "applies), 1 or 2 on (the screen percentage follows r.DynamicRes.FrameTimeBudgetMs "
+                   "between the minimum and maximum). Offline renders always use r.ScreenPercentage.",
+           .allowed = {0, 1, 2},
+           .category = "Renderer|Resolution"})),
+      dynamicResFrameTimeBudgetMs(cvars.add<float>(
+          {.name = "r.DynamicRes.FrameTimeBudgetMs",
+           .defaultValue = 150.0f,
+           .help = "Wall-clock milliseconds per frame dynamic resolution aims for (150: about 6.7 frames "
+                   "per second, what a CPU device such as lavapipe can hold with GI; 33.3 on a GPU).",
+           .min = 1.0,
+           .max = 10000.0,
+           .outOfRange = RangePolicy::Clamp,
+           .category = "Renderer|Resolution"})),
+      dynamicResMinScreenPercentage(
+          cvars.add<float>({.name = "r.DynamicRes.MinScreenPercentage",
+                            .defaultValue = 10.0f,
+                            .help = "Lowest screen percentage dynamic resolution goes to.",
+                            .min = 5.0,
+                            .max = 200.0,
+                            .outOfRange = RangePolicy::Clamp,
+                            .category = "Renderer|Resolution"})),
+      dynamicResMaxScreenPercentage(
+          cvars.add<float>({.name = "r.DynamicRes.MaxScreenPercentage",
+                            .defaultValue = 100.0f,
+                            .help = "Highest screen percentage dynamic resolution goes to.",
+                            .min = 5.0,
+                            .max = 200.0,
+                            .outOfRange = RangePolicy::Clamp,
+                            .category = "Renderer|Resolution"})) {}
 
 }  // namespace bounce

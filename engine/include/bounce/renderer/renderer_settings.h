@@ -17,6 +17,15 @@ struct RendererSettings {
   CVarRef<float>
       ambientIrradiance;  ///< r.Lighting.AmbientIrradiance (W/m²), post-process "AmbientIrradiance"
   CVarRef<int32_t> rayTracingBackend;  ///< r.RayTracing.Backend: Auto | Software | Hardware
+  /// r.ScreenPercentage: the scene renders at this percentage of the output's width and
+  /// height and is upscaled to it (Unreal's primary screen percentage).
+  CVarRef<float> screenPercentage;
+  /// r.DynamicRes.OperationMode: 0 off, 1 and 2 on (interactive apps pick the screen
+  /// percentage that meets r.DynamicRes.FrameTimeBudgetMs, as Unreal's dynamic resolution).
+  CVarRef<int32_t> dynamicResOperationMode;
+  CVarRef<float> dynamicResFrameTimeBudgetMs;    ///< r.DynamicRes.FrameTimeBudgetMs
+  CVarRef<float> dynamicResMinScreenPercentage;  ///< r.DynamicRes.MinScreenPercentage
+  CVarRef<float> dynamicResMaxScreenPercentage;  ///< r.DynamicRes.MaxScreenPercentage
 };
 
 /// How scene ray tracing runs (r.RayTracing.Backend resolved against the device).

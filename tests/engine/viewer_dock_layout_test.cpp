@@ -1,0 +1,94 @@
+// The viewer's dock layout (the scene never under a panel) and its dynamic-resolution
+// controller (the frame time meets the budget without the image breathing). Both are
+// compiled in from the viewer's app folder: they need no window.
+
+#include "bounce-viewer/dock_layout.h"
+#include "bounce-viewer/dynamic_resolution.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace bounce::viewer {
+namespace {
+
+bool overlaps(const ScreenRect& a, const ScreenRect& b) {
+  return !a.empty() && !b.empty() && a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
+         b.y < a.y + a.height;
+}
+
+TEST(DockLayout, TheSceneFillsWhatThePanelsLeaveAndNoPanelCoversIt) {
+  const PanelVisibility open;  // the defaults: console, views, settings, scene, frame
+  const DockLayout d = DockLayout::compute(1280.0f, 720.0f, 20.0f, open, true, true);
+  for (const ScreenRect& panel : {d.left, d.right, d.bottom}) {
+    EXPECT_FALSE(panel.empty());
+    EXPECT_FALSE(overlaps(panel, d.scene));
+  }
+  // Columns, strip and scene tile the window below the menu bar exactly.
+  const float area = d.left.width * d.left.height + d.right.width * d.right.height +
+                     d.bottom.width * d.bottom.height + d.scene.width * d.scene.height;
+  EXPECT_NEAR(area, 1280.0f * 700.0f, 1.0f);
+  EXPECT_GT(d.scene.width * d.scene.height, 0.35f * 1280.0f * 720.0f);  // most of the window is scene
+  // Each open panel has its own place in its column; the closed one none.
+  const ScreenRect& views = d.place(DockedPanel::Views);
+  const ScreenRect& frame = d.place(DockedPanel::Frame);
+  EXPECT_NEAR(views.y, d.left.y, 1e-3f);
+  EXPECT_NEAR(views.y + views.height, frame.y, 1e-3f);
+  EXPECT_NEAR(frame.y + frame.height, d.left.y + d.left.height, 1e-3f);
+  EXPECT_FALSE(overlaps(d.place(DockedPanel::Settings), d.place(DockedPanel::Scene)));
+  EXPECT_TRUE(d.place(DockedPanel::PostProcess).empty());  // closed by default
+  EXPECT_EQ(d.place(DockedPanel::Console).width, d.scene.width);
+}
+
+TEST(DockLayout, ClosedColumnsAndHiddenUiGiveTheSpaceBack) {
+  PanelVisibility rightOnly;
+  rightOnly.views = rightOnly.frame = rightOnly.postProcess = rightOnly.console = false;
+  const DockLayout d = DockLayout::compute(1280.0f, 720.0f, 20.0f, rightOnly, true, true);
+  EXPECT_EQ(d.scene.x, 0.0f);
+  EXPECT_NEAR(d.scene.width + d.right.width, 1280.0f, 1e-3f);
+  EXPECT_NEAR(d.scene.height, 700.0f, 1e-3f);
+  for (bool ui : {false, true}) {
+    const DockLayout full =
+        DockLayout::compute(640.0f, 480.0f, 20.0f, PanelVisibility{}, ui, /*docked=*/false);
+    EXPECT_EQ(full.scene.width, 640.0f);
+    EXPECT_EQ(full.scene.height, 480.0f);
+  }
+  const DockLayout hidden = DockLayout::compute(640.0f, 480.0f, 20.0f, PanelVisibility{}, false, true);
+  EXPECT_EQ(hidden.scene.width, 640.0f);
+  // A window narrower than both columns' minimum widths still leaves 40% for the scene.
+  const DockLayout narrow = DockLayout::compute(500.0f, 400.0f, 20.0f, PanelVisibility{}, true, true);
+  EXPECT_NEAR(narrow.scene.width, 200.0f, 1e-3f);
+}
+
+// A device whose frame time is fixed + per-pixel cost: ms = 20 + 0.05 · percent².
+float frameMs(float percent) { return 20.0f + 0.05f * percent * percent; }
+
+TEST(DynamicResolution, SettlesWhereTheFrameMeetsTheBudgetAndStaysThere) {
+  DynamicResolution d;
+  const DynamicResolutionLimits limits{.budgetMs = 150.0f, .minPercent = 10.0f, .maxPercent = 100.0f};
+  float p = d.current();
+  for (int i = 0; i < 60; ++i) p = d.next(frameMs(p), limits);
+  // On budget: 20 + 0.05 p² = 150 at p = 51; the dead band allows −10% … +5% of the budget.
+  EXPECT_LE(frameMs(p), 150.0f * 1.1f);
+  EXPECT_GE(frameMs(p), 150.0f / 1.05f * 0.9f);
+  // And it does not breathe: the next frames keep the percentage.
+  const float settled = p;
+  for (int i = 0; i < 10; ++i) p = d.next(frameMs(p), limits);
+  EXPECT_EQ(p, settled);
+}
+
+TEST(DynamicResolution, ASlowFrameDropsFastAndTheLimitsHold) {
+  DynamicResolution d;
+  const DynamicResolutionLimits limits{.budgetMs = 100.0f, .minPercent = 20.0f, .maxPercent = 80.0f};
+  const float before = d.current();
+  EXPECT_NEAR(d.next(1000.0f, limits), std::max(before * 0.7f, 20.0f), 1e-4f);  // a 10× slow frame: −30%
+  for (int i = 0; i < 20; ++i) d.next(10000.0f, limits);
+  EXPECT_EQ(d.current(), 20.0f);
+  for (int i = 0; i < 100; ++i) d.next(1.0f, limits);
+  EXPECT_EQ(d.current(), 80.0f);
+  // Nonsense times change nothing.
+  for (float bad : {0.0f, -5.0f, NAN, INFINITY}) EXPECT_EQ(d.next(bad, limits), 80.0f);
+}
+
+}  // namespace
+}  // namespace bounce::viewer
