@@ -36,7 +36,9 @@ inline std::filesystem::path scratchDir() {
 }
 
 /// Runs bounce-viewer with validation, no user ini and the build's shader cache.
-inline CommandResult runViewer(const std::string& args) {
+/// Runs one of the built programs (bounce-viewer, bounce-render) from the repository root
+/// with validation on; its output and exit status.
+inline CommandResult runProgram(const std::string& program, const std::string& args) {
   const std::filesystem::path dir = scratchDir();
   // The synchronization checks pass through when the test runs with them (tests/sync_validation.cmake).
   const char* validation = std::getenv("BOUNCE_VALIDATION");
@@ -44,7 +46,7 @@ inline CommandResult runViewer(const std::string& args) {
   const std::string cmd =
       std::string("cd ") + BOUNCE_SOURCE_DIR + " && XDG_RUNTIME_DIR=" + (dir / "runtime").string() +
       " BOUNCE_VALIDATION=" + mode + " BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
-      "/shader-cache timeout 300 " + BOUNCE_BINARY_DIR + "/bin/bounce-viewer " + args + " 2>&1";
+      "/shader-cache timeout 300 " + BOUNCE_BINARY_DIR + "/bin/" + program + " " + args + " 2>&1";
   CommandResult r;
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
@@ -54,6 +56,8 @@ inline CommandResult runViewer(const std::string& args) {
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+inline CommandResult runViewer(const std::string& args) { return runProgram("bounce-viewer", args); }
 
 /// A screenshot the session wrote; a failed expectation (with the session's output)
 /// and an empty image when it is missing or unreadable.

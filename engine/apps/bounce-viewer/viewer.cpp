@@ -184,11 +184,22 @@ void Viewer::reportFrameRun() {
   const std::string line = fmt::format(
       "frames {}: {:.2f} frames/s ({:.1f} ms each), last at {}x{} ({:.0f}% of the {}x{} viewport)",
       frameRun_->frames, rate, seconds * 1000.0 / std::max(1u, frameRun_->frames), r.width, r.height,
-      dynamicResolution_.current(), uint32_t(layout_.scene.width), uint32_t(layout_.scene.height));
+      100.0f / float(std::max(1u, refinement_.factor())), uint32_t(layout_.scene.width),
+      uint32_t(layout_.scene.height));
   log_.add(LineKind::Output, line);
   fmt::print("bounce-viewer: {}\n", line);
   std::fflush(stdout);
   frameRun_.reset();
+}
+
+uint64_t Viewer::refinementState(const FrameView& view, uint32_t factor) const {
+  // Anything that changes the image: the view (camera, size), the factor, the scene and
+  // every setting. Hashing the settings' values each frame costs microseconds.
+  std::string key = fmt::format("{} {} {} {}", view.width, view.height, factor, engine_->scene()->revision());
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) key += fmt::format(" {} {}", view.view[c][r], view.projection[c][r]);
+  for (const CVar* cvar : engine_->cvars().list()) key += cvar->valueText();
+  return std::hash<std::string>{}(key);
 }
 
 float Viewer::nextScreenPercentage() {
@@ -413,20 +424,30 @@ void Viewer::renderAndPresent() {
                 {uint32_t(std::max(1L, std::lround(layout_.scene.width * sx))),
                  uint32_t(std::max(1L, std::lround(layout_.scene.height * sy)))}};
   if (layout_.scene.empty()) rect = {{0, 0}, extent};
+  // The scene renders at 1/factor of the viewport (the screen percentage, in whole
+  // factors) with sub-pixel jitter; progressive refinement turns a still view's frames
+  // into the full-resolution image (progressive_refinement.h). The UI draws at window
+  // resolution on top.
+  const float percent = nextScreenPercentage();
+  const uint32_t factor = std::clamp(uint32_t(std::lround(100.0f / std::max(percent, 1.0f))), 1u, 16u);
+  const FrameView full = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
+  const uint64_t state = refinementState(full, factor);
+  if (state != refinementState_) {
+    refinement_.reset(rect.extent.width, rect.extent.height, factor);
+    refinementState_ = state;
+  }
   FrameOutputs outputs;
   outputs.display = true;
-  // The scene renders below the viewport's size and the presenter scales it up on the
-  // GPU; the UI draws at window resolution on top.
-  outputs.screenPercentage = nextScreenPercentage();
+  outputs.screenPercentage = 100.0f;  // the refinement view is already the render's size
   outputs.keepRenderResolution = true;
   if (pendingScreenshot_) outputs.aovs.push_back("radiance");
-  const FrameView view = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
+  const FrameView view = refinementView(full, factor, refinement_.nextJitter());
   std::optional<ImageBuffer> hdr;
   try {
     RenderedFrame frame = renderer_->render(view, outputs, frameIndex_++);
     reportChangedProblems(frame);
     if (auto it = frame.images.find("display"); it != frame.images.end() && !it->second.empty())
-      displayed_ = std::move(it->second);
+      displayed_ = refinement_.add(it->second);
     // The HDR screenshot has the viewport's size, as the PNG shows it.
     if (auto it = frame.images.find("radiance"); it != frame.images.end())
       hdr = resampleBilinear(it->second, rect.extent.width, rect.extent.height);

@@ -14,6 +14,7 @@
 #include "imgui_layer.h"
 #include "panels.h"
 #include "presenter.h"
+#include "progressive_refinement.h"
 #include "renderer/renderer.h"
 #include "script.h"
 #include "viewer_options.h"
@@ -137,6 +138,10 @@ class Viewer {
   std::deque<float> frameMs_;
   DockLayout layout_;
   DynamicResolution dynamicResolution_;
+  ProgressiveRefinement refinement_;
+  uint64_t refinementState_ = 0;  ///< refinementState() of the frames being refined
+  /// A fingerprint of what the refined image depends on; a change starts it over.
+  uint64_t refinementState(const FrameView& view, uint32_t factor) const;
   float wallFrameMs_ = 0.0f;
   std::chrono::steady_clock::time_point lastPresent_{};
   // A `frames N` run being measured: frames left and when it started.

@@ -1,0 +1,108 @@
+// The viewer's progressive refinement: a still camera converges to the full-resolution
+// image from frames rendered at 1/factor of it with sub-pixel jitter. Compiled in from
+// the viewer's app folder: it needs no window.
+
+#include "bounce-viewer/progressive_refinement.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace bounce::viewer {
+namespace {
+
+// Pixel coordinates (x, y) of a world point in a view of width × height.
+glm::vec2 pixelOf(const FrameView& v, glm::vec3 world) {
+  const glm::vec4 clip = v.viewProjection * glm::vec4(world, 1.0f);
+  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  return (ndc + 1.0f) * 0.5f * glm::vec2(float(v.width), float(v.height));
+}
+
+// The world point at the centre of pixel (x, y) of `v`, one metre along its ray.
+glm::vec3 worldAt(const FrameView& v, float x, float y) {
+  const glm::vec2 ndc = glm::vec2((x + 0.5f) / float(v.width), (y + 0.5f) / float(v.height)) * 2.0f - 1.0f;
+  glm::vec4 p = v.inverseViewProjection * glm::vec4(ndc, 0.5f, 1.0f);
+  return glm::vec3(p) / p.w;
+}
+
+TEST(RefinementView, EachLowResolutionPixelLandsOnItsViewportPixel) {
+  Camera camera;
+  camera.yfov = 0.8f;
+  const FrameView full = FrameView::fromCamera(camera, 203, 101);  // sizes that do not divide
+  for (uint32_t factor : {1u, 2u, 3u, 4u})
+    for (glm::uvec2 j : {glm::uvec2(0, 0), glm::uvec2(factor - 1, 0), glm::uvec2(factor / 2, factor - 1)}) {
+      const FrameView low = refinementView(full, factor, j);
+      EXPECT_EQ(low.width, (203 + factor - 1) / factor);
+      EXPECT_EQ(low.height, (101 + factor - 1) / factor);
+      for (glm::uvec2 px : {glm::uvec2(0, 0), glm::uvec2(7, 3), glm::uvec2(low.width - 1, low.height - 1)}) {
+        const glm::vec3 w = worldAt(low, float(px.x), float(px.y));
+        const glm::vec2 at = pixelOf(full, w);
+        EXPECT_NEAR(at.x, float(px.x * factor + j.x) + 0.5f, 2e-3f) << factor;
+        EXPECT_NEAR(at.y, float(px.y * factor + j.y) + 0.5f, 2e-3f) << factor;
+      }
+    }
+}
+
+// A viewport image with a distinct value per pixel, and the frame a renderer would give at
+// `factor` and `jitter` (its pixels are the viewport's pixels x·factor + j).
+ImageBuffer viewportImage(uint32_t w, uint32_t h) {
+  ImageBuffer img(w, h, 2);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      img.at(x, y, 0) = float(x) + 1000.0f * float(y);
+      img.at(x, y, 1) = std::sin(float(x * 7 + y * 3));
+    }
+  return img;
+}
+ImageBuffer renderedAt(const ImageBuffer& full, uint32_t factor, glm::uvec2 j) {
+  const uint32_t w = (full.width + factor - 1) / factor, h = (full.height + factor - 1) / factor;
+  ImageBuffer img(w, h, full.channels);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x)
+      for (uint32_t c = 0; c < full.channels; ++c)
+        img.at(x, y, c) = full.at(std::min(x * factor + j.x, full.width - 1),
+                                  std::min(y * factor + j.y, full.height - 1), c);
+  return img;
+}
+
+TEST(ProgressiveRefinement, AStillViewReachesTheFullResolutionImageAfterFactorSquaredFrames) {
+  const ImageBuffer truth = viewportImage(23, 14);
+  for (uint32_t factor : {1u, 2u, 3u, 4u}) {
+    ProgressiveRefinement r;
+    r.reset(23, 14, factor);
+    std::set<std::pair<uint32_t, uint32_t>> jitters;
+    ImageBuffer shown;
+    for (uint32_t f = 0; f < factor * factor; ++f) {
+      EXPECT_FALSE(r.complete());
+      const glm::uvec2 j = r.nextJitter();
+      jitters.insert({j.x, j.y});
+      shown = r.add(renderedAt(truth, factor, j));
+    }
+    EXPECT_TRUE(r.complete());
+    EXPECT_EQ(jitters.size(), size_t(factor * factor));  // every phase once
+    EXPECT_EQ(shown.pixels, truth.pixels) << "factor " << factor;
+  }
+}
+
+TEST(ProgressiveRefinement, TheFirstFrameFillsEveryPixelAndAResetForgets) {
+  const ImageBuffer truth = viewportImage(16, 8);
+  ProgressiveRefinement r;
+  r.reset(16, 8, 4);
+  const glm::uvec2 j = r.nextJitter();
+  const ImageBuffer first = r.add(renderedAt(truth, 4, j));
+  ASSERT_EQ(first.width, 16u);
+  // Rendered pixels are exact; the others lie between their rendered neighbours.
+  EXPECT_EQ(first.at(j.x, j.y, 0), truth.at(j.x, j.y, 0));
+  for (float v : first.pixels) EXPECT_TRUE(std::isfinite(v));
+  r.reset(16, 8, 4);
+  EXPECT_EQ(r.frames(), 0u);
+  // A frame of the wrong size is shown (upscaled) but not taken as a phase.
+  const ImageBuffer odd = r.add(ImageBuffer(3, 3, 2, 5.0f));
+  EXPECT_EQ(r.frames(), 0u);
+  EXPECT_EQ(odd.width, 16u);
+  EXPECT_FLOAT_EQ(odd.at(10, 5, 0), 5.0f);
+}
+
+}  // namespace
+}  // namespace bounce::viewer
