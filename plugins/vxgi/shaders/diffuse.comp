@@ -24,7 +24,9 @@ void main() {
   int k = max(pc.sizes.z, 1);
   ivec2 traceSize = (pc.sizes.xy + k - 1) / k;
   if (any(greaterThanEqual(coarse, traceSize))) return;
-  ivec2 pixel = min(coarse * k + k / 2, pc.sizes.xy - 1);  // the pixel this sample stands for
+  // The pixel this sample stands for: the middle of its k×k cell, or with the temporal
+  // filter the cell's pixel of this frame's phase (extra.w; tracing_common.glsl).
+  ivec2 pixel = min(coarse * k + samplePhaseOffset(k), pc.sizes.xy - 1);
   vec3 P, N;
   float roughness;
   if (!surfaceAt(pixel, P, N, roughness)) {

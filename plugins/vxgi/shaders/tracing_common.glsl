@@ -13,12 +13,23 @@ layout(push_constant) uniform Push {
   vec4 cameraPosition;   // xyz
   ivec4 sizes;           // x, y: full view size; z: sparsity k (trace every k-th pixel); w: cones
   vec4 tracing;          // x: intensity, y: step factor, z: max distance (m), w: normal offset (voxels)
-  vec4 extra;            // x: ambient range (m), y: specular roughness threshold, z: min cone factor, w: -
+  vec4 extra;            // x: ambient range (m), y: specular roughness threshold, z: min cone factor,
+                         // w: sparse sample phase (0..k²−1), or −1 for the cell's middle
 } pc;
 
 layout(binding = 20) uniform sampler2D gNormalRoughness;
 layout(binding = 21) uniform sampler2D gDepth;
 layout(binding = 22) uniform sampler2D gMaterial;
+
+// Where in its k×k cell a sparse sample is traced: the middle, or with the temporal
+// filter the frame's phase, every pixel of the cell in turn starting from the middle (so
+// the first frame after a reset samples where the filter off does).
+ivec2 samplePhaseOffset(int k) {
+  int phase = int(pc.extra.w);
+  if (phase < 0) return ivec2(k / 2);
+  int i = ((k / 2) * k + k / 2 + phase) % (k * k);
+  return ivec2(i % k, i / k);
+}
 
 // Orthonormal basis around n (Duff et al. 2017: branchless, no singularity).
 void basis(vec3 n, out vec3 t, out vec3 b) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace bounce::vxgi {
 
@@ -56,7 +57,7 @@ int32_t checkedCones(int32_t cones) { return std::clamp(cones, 1, 32); }
 
 void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& s,
                       const ClipMapHandles& handles, const ClipMapFormat& format, bool anyVoxelized,
-                      bool anySpecular) {
+                      bool anySpecular, TemporalHistory* history, bool voxelsChanged) {
   Blackboard& bb = graph.blackboard();
   TracingPush push{};
   push.inverseViewProjection = frame.view.inverseViewProjection;
@@ -67,8 +68,19 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
   push.tracing = glm::vec4(frame.setting(s.diffuseIntensity), frame.setting(s.tracingStep),
                            frame.setting(s.maxDistance), s.normalOffset.get());
   push.extra = glm::vec4(frame.setting(s.ambientRange), s.specularRoughnessThreshold.get(),
-                         s.specularMinConeFactor.get(), 0.0f);
+                         s.specularMinConeFactor.get(), -1.0f);  // w: the cell's middle
   const bool ao = format.ambientOcclusionMode;
+  // Temporal filter: sparse diffuse light (not ambient occlusion) with a history to keep.
+  std::optional<TemporalHistory::Frame> temporal;
+  if (history && sparsity > 1 && !ao && s.temporalFilter.get()) {
+    uint64_t key = 1469598103934665603ull;  // FNV-1a over what the traced values depend on
+    auto mix = [&key](auto value) { key = (key ^ std::hash<decltype(value)>{}(value)) * 1099511628211ull; };
+    for (float v : {push.tracing.x, push.tracing.y, push.tracing.z, push.tracing.w, push.extra.x}) mix(v);
+    mix(push.sizes.z);
+    mix(push.sizes.w);
+    temporal = history->begin(graph, frame.view, uint32_t(sparsity), key, voxelsChanged);
+    push.extra.w = float(temporal->phase);
+  }
   const bool diffuseOn = s.diffuseEnable.get();
   const VkFormat diffuseFormat = ao ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT;
   auto needsVoxels = [anyVoxelized] {
@@ -102,6 +114,15 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
       ctx.dispatchThreads(pipeline, bind, {width, height, 1}, push);
     };
   });
+  BufferHandle temporalConstants;
+  if (temporal)
+    graph.addPass("VXGI.TemporalConstants", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      temporalConstants =
+          b.write(b.createBuffer("VXGI.TemporalConstants", {sizeof(TemporalConstants)}), Access::TransferDst);
+      BufferHandle out = temporalConstants;
+      const TemporalConstants constants = temporal->constants;
+      return [=](PassContext& ctx) { ctx.upload(out, &constants, sizeof(constants)); };
+    });
   if (sparsity > 1) {
     graph.addPass("VXGI.DiffuseInterpolation", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       const GBufferInputs gbuffer = GBufferInputs::read(b, bb);
@@ -109,12 +130,33 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
       TextureHandle full = b.write(b.createTexture("VXGI.Diffuse", TextureDesc::viewSized(diffuseFormat)),
                                    Access::StorageWrite);
       bb.setTexture(ao ? channels::AmbientOcclusion : channels::IndirectDiffuse, full);
+      std::optional<TemporalHistory::Frame> t = temporal;
+      if (t) {
+        b.read(temporalConstants, Access::StorageRead);
+        t->readValue = b.read(t->readValue, Access::Sampled);
+        t->readSurface = b.read(t->readSurface, Access::Sampled);
+        t->writeValue = b.write(t->writeValue, Access::StorageWrite);
+        t->writeSurface = b.write(t->writeSurface, Access::StorageWrite);
+      }
+      const BufferHandle constants = temporalConstants;
+      const FrameView view = frame.view;
       return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("upsample.comp", format));
+        auto source = gpu::ShaderSource{std::string(kShaders) + "upsample.comp", shaderDefines(format)};
+        source.defines.emplace_back("VXGI_TEMPORAL", t ? "1" : "0");
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(source);
         gpu::Bindings bind;
         gbuffer.bind(bind);
         bind.texture("traced", sparse, gpu::SamplerKind::NearestClamp).storage("outFull", full);
+        if (t) {
+          bind.buffer("temporal", constants)
+              .texture("historyValue", t->readValue, gpu::SamplerKind::NearestClamp)
+              .texture("historySurface", t->readSurface, gpu::SamplerKind::NearestClamp)
+              .storage("outHistoryValue", t->writeValue)
+              .storage("outHistorySurface", t->writeSurface);
+        }
         ctx.dispatchThreads(pipeline, bind, {push.sizes.x, push.sizes.y, 1}, push);
+        // Recorded, so it runs: this frame's view is the next one's previous.
+        if (t) history->end(view);
       };
     });
   }

@@ -5,6 +5,7 @@
 
 #include "clip_map_textures.h"
 #include "clip_map_update.h"
+#include "temporal_history.h"
 #include "vxgi_settings.h"
 
 #include <bounce/frame/frame_context.h>
@@ -30,10 +31,12 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                            ClipMapHandles& handles, const VoxelizationPlan& plan,
                            std::shared_ptr<VoxelizationRecord> record, std::function<void()> committed);
 
-/// Diffuse (or ambient-occlusion) and specular tracing into the GI channels.
+/// Diffuse (or ambient-occlusion) and specular tracing into the GI channels. With the
+/// temporal filter on and sparse tracing, `history` (plugin-owned, outliving the frame)
+/// carries each pixel's exactly traced value across frames; `voxelsChanged` starts it over.
 void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
                       const ClipMapHandles& handles, const ClipMapFormat& format, bool anyVoxelized,
-                      bool anySpecular);
+                      bool anySpecular, TemporalHistory* history, bool voxelsChanged);
 
 /// The debug views (r.VXGI.DebugMode ≠ 0).
 void addDebugPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,

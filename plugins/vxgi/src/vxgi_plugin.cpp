@@ -125,13 +125,14 @@ class VxgiPlugin final : public Plugin {
                           [this, committed] { update_.commit(*committed); });
     lastPlanReason_ = plan.reason;
     lastLayout_ = layout;
+    f.voxelsChanged = !plan.empty();
     frame_ = std::move(f);
   }
 
   void tracing(RenderGraph& graph, const FrameContext& frame) {
     if (!frame_) return;
     addTracingPasses(graph, frame, settings_, frame_->handles, frame_->format, frame_->anyVoxelized,
-                     frame_->anySpecular);
+                     frame_->anySpecular, &history_, frame_->voxelsChanged);
   }
 
   void debug(RenderGraph& graph, const FrameContext& frame) {
@@ -164,6 +165,7 @@ class VxgiPlugin final : public Plugin {
     ClipMapHandles handles;
     bool anyVoxelized = false;
     bool anySpecular = false;
+    bool voxelsChanged = false;  ///< this frame re-voxelizes something
   };
 
   VxgiSettings settings_;
@@ -173,6 +175,7 @@ class VxgiPlugin final : public Plugin {
   std::optional<ClipMapLayout> lastLayout_;
   std::string lastPlanReason_ = "not rendered yet";
   std::shared_ptr<VoxelizationRecord> record_ = std::make_shared<VoxelizationRecord>();
+  TemporalHistory history_;
 };
 
 }  // namespace bounce::vxgi

@@ -173,6 +173,13 @@ void VxgiSettings::declare(PluginContext& ctx) {
                                           .allowed = {1, 2, 4},
                                           .postProcess = "VxgiDiffuseSparsity",
                                           .category = tracing});
+  temporalFilter = ctx.addCVar<bool>(
+      {.name = "r.VXGI.TemporalFilter",
+       .defaultValue = true,
+       .help = "Sparse diffuse tracing moves its samples every frame (k² phases) and keeps each "
+               "pixel's exactly traced value, reprojected, as the VXGI SDK filters temporally: a still "
+               "view reaches every-pixel tracing after k² frames. Reset when the voxels change.",
+       .category = tracing});
   diffuseIntensity = ctx.addCVar<float>({.name = "r.VXGI.DiffuseIntensity",
                                          .defaultValue = 1.0f,
                                          .help = "Scale of the indirect diffuse channel (1 = physical).",

@@ -37,6 +37,7 @@ struct VxgiSettings {
   // Tracing (post-process-volume settings where users tune them per area).
   CVarRef<bool> diffuseEnable, specularEnable;
   CVarRef<int32_t> diffuseCones, diffuseSparsity;
+  CVarRef<bool> temporalFilter;  ///< r.VXGI.TemporalFilter: sparse diffuse converges over frames
   CVarRef<float> diffuseIntensity, specularIntensity, tracingStep, maxDistance, normalOffset, ambientRange;
   CVarRef<float> specularRoughnessThreshold, specularMinConeFactor;
   // Debugging.
