@@ -68,8 +68,12 @@ void main() {
     emittance[d] = vec3(0.0);
 #else
     float w = imageLoad(scratch, vxgiScratchCoord(t, d * per + 3, pc.scratchLayout.x)).r;
-    vec3 sum;
-    for (int c = 0; c < 3; ++c) sum[c] = imageLoad(scratch, vxgiScratchCoord(t, d * per + c, pc.scratchLayout.x)).r;
+    // Most voxels are air: no coverage means density 0, and then emittance (radiance ×
+    // density) is 0 whatever the colour sums hold, so they are not read (a quarter of the
+    // loads for an empty voxel).
+    vec3 sum = vec3(0.0);
+    if (w > 0.0)
+      for (int c = 0; c < 3; ++c) sum[c] = imageLoad(scratch, vxgiScratchCoord(t, d * per + c, pc.scratchLayout.x)).r;
     // w ≈ 0 with a sum means nothing opaque emits here; 1e-6 only keeps the division
     // finite, and the density below is then 0 anyway.
     emittance[d] = sum / max(w, 1e-6);
