@@ -7,9 +7,10 @@
 namespace bounce {
 namespace {
 
-constexpr VkPipelineStageFlags2 kGraphicsShaders = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                                   VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT |
-                                                   VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+// The shader stages a graphics pass syncs: vertex and fragment, and the geometry stage
+// only when the pass said it uses geometry shaders.
+constexpr VkPipelineStageFlags2 kGraphicsShaders =
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 
 const Barrier* barrierFor(const CompiledGraph& c, std::string_view pass, std::string_view resource) {
   const CompiledPass* p = c.find(pass);
@@ -93,6 +94,33 @@ TEST(Barriers, RepeatedReadsNeedNoFurtherBarrier) {
   CompiledGraph c = g.compile();
   EXPECT_NE(barrierFor(c, "ReadA", "t"), nullptr);
   EXPECT_EQ(barrierFor(c, "ReadB", "t"), nullptr);
+}
+
+TEST(Barriers, OnlyPassesWithGeometryShadersSyncTheGeometryStage) {
+  // Two graphics passes write a storage image a compute pass reads: the one that declared
+  // geometry shaders makes its writes visible from that stage too; the other never names it.
+  for (bool geometry : {false, true}) {
+    RenderGraph g;
+    TextureHandle t, out;
+    g.addPass("Draw", Queue::Graphics, [&](PassBuilder& b) {
+      if (geometry) b.useGeometryShaders();
+      t = b.write(b.createTexture("sums", TextureDesc{.format = VK_FORMAT_R32_UINT, .width = 8, .height = 8}),
+                  Access::StorageReadWrite);
+      return RecordFn{};
+    });
+    g.addPass("Read", Queue::Compute, [&](PassBuilder& b) {
+      b.read(t, Access::StorageRead);
+      out = b.write(b.createTexture("out", TextureDesc{.width = 4, .height = 4}), Access::StorageWrite);
+      return RecordFn{};
+    });
+    g.markOutput(out, "x");
+    const CompiledGraph c = g.compile();
+    const Barrier* b = barrierFor(c, "Read", "sums");
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->before.stages, kGraphicsShaders | (geometry ? VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT
+                                                             : VK_PIPELINE_STAGE_2_NONE))
+        << geometry;
+  }
 }
 
 TEST(Barriers, StorageWriteThenReadInGeneralLayoutIsAMemoryBarrierOnly) {

@@ -22,7 +22,9 @@ class PluginHostTest : public ::testing::Test {
   AovRegistry aovs;
   QualityKnobRegistry knobs;
   SceneVolumeKinds volumeKinds;
-  EngineServices services{cvars, console, config, parameters, hooks, debugViews, aovs, knobs, volumeKinds};
+  SceneDataRequests sceneData;
+  EngineServices services{cvars,      console, config, parameters,  hooks,
+                          debugViews, aovs,    knobs,  volumeKinds, sceneData};
   PluginHost host{services};
 };
 

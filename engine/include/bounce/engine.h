@@ -73,6 +73,8 @@ class Engine {
   QualityKnobRegistry& qualityKnobs() { return knobs_; }
   const QualityKnobRegistry& qualityKnobs() const { return knobs_; }
   const SceneVolumeKinds& sceneVolumeKinds() const { return volumeKinds_; }
+  /// Scene data plugins asked for (simplified meshes).
+  const SceneDataRequests& sceneDataRequests() const { return sceneData_; }
   PluginHost& plugins() { return *plugins_; }
   EngineServices& services() { return services_; }
 
@@ -133,8 +135,9 @@ class Engine {
   AovRegistry aovs_;
   QualityKnobRegistry knobs_;
   SceneVolumeKinds volumeKinds_;
-  EngineServices services_{cvars_,      console_, config_, parameters_, hooks_,
-                           debugViews_, aovs_,    knobs_,  volumeKinds_};
+  SceneDataRequests sceneData_;
+  EngineServices services_{cvars_,      console_, config_, parameters_,  hooks_,
+                           debugViews_, aovs_,    knobs_,  volumeKinds_, sceneData_};
   std::unique_ptr<PluginHost> plugins_;
   std::unique_ptr<Scene> scene_;
 

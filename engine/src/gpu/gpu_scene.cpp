@@ -54,10 +54,12 @@ GpuScene::GpuScene(const Device& device)
   materials_ = makeBuffer(device, 0, kStorage, "scene.materials");
 }
 
-void GpuScene::update(const Scene& scene) {
+void GpuScene::update(const Scene& scene, bool simplifiedMeshes) {
   const bool newScene = &scene != seenScene_;
-  if (newScene || scene.revision(SceneChange::Geometry) != seenGeometry_) {
-    uploadGeometry(scene);
+  // Lists once asked for are kept while the geometry stays (asking again costs nothing).
+  const bool simplified = simplifiedMeshes || (simplifiedBuilt_ && !newScene);
+  if (newScene || scene.revision(SceneChange::Geometry) != seenGeometry_ || simplified != simplifiedBuilt_) {
+    uploadGeometry(scene, simplified);
     uploadInstances(scene);
     uploadMaterials(scene);
   } else {
@@ -70,7 +72,7 @@ void GpuScene::update(const Scene& scene) {
   seenMaterials_ = scene.revision(SceneChange::Material);
 }
 
-void GpuScene::uploadGeometry(const Scene& scene) {
+void GpuScene::uploadGeometry(const Scene& scene, bool simplifiedMeshes) {
   std::vector<SceneVertex> vertices;
   std::vector<uint32_t> indices;
   struct Range {
@@ -91,10 +93,11 @@ void GpuScene::uploadGeometry(const Scene& scene) {
         vertices.push_back(sv);
       }
       indices.insert(indices.end(), p.indices.begin(), p.indices.end());
-      for (SimplifiedIndexList& list : simplifiedIndexLists(p.positions, p.indices, 3)) {
-        r.simplified.push_back({uint32_t(indices.size()), uint32_t(list.indices.size()), list.error});
-        indices.insert(indices.end(), list.indices.begin(), list.indices.end());
-      }
+      if (simplifiedMeshes)
+        for (SimplifiedIndexList& list : simplifiedIndexLists(p.positions, p.indices, 3)) {
+          r.simplified.push_back({uint32_t(indices.size()), uint32_t(list.indices.size()), list.error});
+          indices.insert(indices.end(), list.indices.begin(), list.indices.end());
+        }
       ranges[m].push_back(std::move(r));
     }
   }
@@ -127,6 +130,7 @@ void GpuScene::uploadGeometry(const Scene& scene) {
       draws_.push_back(d);
     }
   }
+  simplifiedBuilt_ = simplifiedMeshes;
   ++generation_;
 }
 

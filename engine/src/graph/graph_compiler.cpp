@@ -371,8 +371,8 @@ class GraphCompiler {
         if (isDropped(i, u)) continue;
         const Use& use = p.uses[u];
         const auto& cr = out_.resources[use.resource];
-        ResourceState s =
-            accessState(use.access, p.queue, cr.image, cr.image && isDepthFormat(cr.texture.format));
+        ResourceState s = accessState(use.access, p.queue, cr.image,
+                                      cr.image && isDepthFormat(cr.texture.format), p.geometryShaders);
         auto it = std::find_if(combined.begin(), combined.end(),
                                [&](const auto& c) { return c.first == use.resource; });
         if (it == combined.end()) {

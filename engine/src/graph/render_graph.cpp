@@ -67,6 +67,8 @@ void PassBuilder::sideEffect(std::string why) { graph_.passes_[pass_].sideEffect
 
 void PassBuilder::whenUnread(std::string why) { graph_.passes_[pass_].unreadReason = std::move(why); }
 
+void PassBuilder::useGeometryShaders() { graph_.passes_[pass_].geometryShaders = true; }
+
 // --- RenderGraph ----------------------------------------------------------------------
 
 uint32_t RenderGraph::addResource(Resource resource) {

@@ -171,15 +171,16 @@ std::string_view accessName(Access a) {
 
 std::string_view queueName(Queue q) { return q == Queue::Graphics ? "graphics" : "compute"; }
 
-ResourceState accessState(Access access, Queue queue, bool isImage, bool depthFormat) {
-  // Graphics passes may touch a resource from any of their shader stages (the
-  // voxelizer samples in its geometry shader); naming all three keeps barriers correct
-  // without per-stage declarations, at the cost of slightly earlier waits.
-  const VkPipelineStageFlags2 shaders = queue == Queue::Compute
-                                            ? VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT
-                                            : VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
-                                                  VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT |
-                                                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+ResourceState accessState(Access access, Queue queue, bool isImage, bool depthFormat, bool geometryShaders) {
+  // Graphics passes may touch a resource from any of their shader stages; naming vertex
+  // and fragment keeps barriers correct without per-resource stage declarations, at the
+  // cost of slightly earlier waits. The geometry stage only for passes that said they use
+  // it (PassBuilder::useGeometryShaders): every other pass would wait on it for nothing.
+  const VkPipelineStageFlags2 shaders =
+      queue == Queue::Compute
+          ? VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT
+          : VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                (geometryShaders ? VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT : VK_PIPELINE_STAGE_2_NONE);
   const VkPipelineStageFlags2 depthTests =
       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
   auto layout = [&](VkImageLayout l) { return isImage ? l : VK_IMAGE_LAYOUT_UNDEFINED; };

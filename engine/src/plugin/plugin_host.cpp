@@ -26,6 +26,7 @@ void EngineServices::removeOwnedBy(OwnerId owner) {
   aovs.removeOwnedBy(owner);
   knobs.removeOwnedBy(owner);
   volumeKinds.removeOwnedBy(owner);
+  sceneData.removeOwnedBy(owner);
   console.removeOwnedBy(owner);
   parameters.removeOwnedBy(owner);  // before the variables holding its defaults
   cvars.removeOwnedBy(owner);

@@ -55,7 +55,7 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
                                uint64_t frameIndex) {
   const Scene* scene = engine_.scene();
   if (!scene) throw std::logic_error("Renderer::render without a scene");
-  scene_->update(*scene);
+  scene_->update(*scene, engine_.sceneDataRequests().simplifiedMeshesWanted());
   const float percent = outputs.screenPercentage > 0.0f ? outputs.screenPercentage
                                                         : engine_.rendererSettings().screenPercentage.get();
   const FrameView view = renderView(outputView, percent);

@@ -183,6 +183,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         });
 
     graph.addPass(fmt::format("VXGI.Voxelize.L{}", level), Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
+      b.useGeometryShaders();  // voxelize.geom reads the clip-map constants
       scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
       TextureDesc targetDesc;
       targetDesc.format = VK_FORMAT_R8_UNORM;

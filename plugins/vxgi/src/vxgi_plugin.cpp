@@ -29,6 +29,9 @@ class VxgiPlugin final : public Plugin {
  public:
   void startup(PluginContext& ctx) override {
     settings_.declare(ctx);
+    // Low-detail voxelization (seed 001, slide 42) draws the engine's simplified meshes;
+    // only while it is on does the engine build them.
+    ctx.requestSimplifiedMeshes([this] { return settings_.voxelizationMeshError.get() > 0.0f; });
     declareDebugViews(ctx);
     // The knobs the seed names as the quality/performance trade-offs.
     ctx.addQualityKnob({.cvar = "r.VXGI.MapSize", .values = {"64", "128"}, .label = "map"});

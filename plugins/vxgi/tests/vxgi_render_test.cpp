@@ -251,6 +251,23 @@ std::vector<uint64_t> voxelizedTriangles(Engine& engine) {
   return triangles;
 }
 
+TEST_F(VxgiRender, SimplifiedMeshesAreBuiltOnlyWhileLowDetailVoxelizationAsksForThem) {
+  // The engine's meshoptimizer lists cost time and memory for every primitive: with
+  // r.VXGI.VoxelizationMeshError at 0 (the default) nothing asks for them and none are
+  // built; VXGI's request (PluginContext::requestSimplifiedMeshes) builds them on the
+  // first frame that voxelizes with a tolerated error.
+  start("content/cornell_box.gltf", kSmall, "VXGI");
+  render(32, 32, {});
+  EXPECT_FALSE(renderer->gpuScene().hasSimplifiedMeshes());
+  for (const gpu::GpuDraw& d : renderer->gpuScene().draws()) EXPECT_EQ(d.simplifiedCount, 0u);
+  engine->console().execute("r.VXGI.VoxelizationMeshError 1");
+  render(32, 32, {});
+  EXPECT_TRUE(renderer->gpuScene().hasSimplifiedMeshes());
+  uint32_t lists = 0;
+  for (const gpu::GpuDraw& d : renderer->gpuScene().draws()) lists += d.simplifiedCount;
+  EXPECT_GT(lists, 0u);
+}
+
 TEST_F(VxgiRender, LowDetailMeshesVoxelizeFewerTrianglesAndKeepTheLight) {
   // Seed 001, slide 42: "use low-detailed meshes for voxelization". The Cornell box's
   // sphere (960 triangles) simplifies; its walls and boxes (quads) cannot. Levels are

@@ -94,8 +94,13 @@ class GpuScene {
   explicit GpuScene(const Device& device);
 
   /// Uploads what changed since the last call: all geometry when the scene's geometry
-  /// changed, instance data on transform changes, materials on material changes.
-  void update(const Scene& scene);
+  /// changed, instance data on transform changes, materials on material changes. With
+  /// `simplifiedMeshes` (a plugin asked: PluginContext::requestSimplifiedMeshes) every
+  /// primitive also gets its simplified index lists, built the first frame they are asked
+  /// for and kept; without, none are built and drawScene draws full detail.
+  void update(const Scene& scene, bool simplifiedMeshes = false);
+  /// Whether the draws carry simplified index lists.
+  bool hasSimplifiedMeshes() const { return simplifiedBuilt_; }
 
   const Buffer& vertices() const { return vertices_; }
   const Buffer& indices() const { return indices_; }
@@ -114,7 +119,7 @@ class GpuScene {
   const Aabb& bounds() const { return bounds_; }
 
  private:
-  void uploadGeometry(const Scene& scene);
+  void uploadGeometry(const Scene& scene, bool simplifiedMeshes);
   void uploadInstances(const Scene& scene);
   void uploadMaterials(const Scene& scene);
   const Image& sceneTexture(const Scene& scene, int32_t index, bool srgb);
@@ -130,6 +135,7 @@ class GpuScene {
   uint64_t seenGeometry_ = ~0ull, seenTransforms_ = ~0ull, seenMaterials_ = ~0ull;
   const Scene* seenScene_ = nullptr;
   uint64_t generation_ = 0;
+  bool simplifiedBuilt_ = false;
 };
 
 }  // namespace bounce::gpu

@@ -77,6 +77,10 @@ class PassBuilder {
   /// What the report says when the pass is culled because nobody reads its results
   /// (default: "nothing reads its results (names)"), e.g. "no pass traces rays".
   void whenUnread(std::string why);
+  /// A graphics pass whose geometry shaders read or write its resources: its barriers
+  /// also wait for (and make writes visible to) that stage. Other graphics passes sync
+  /// only their vertex and fragment shaders.
+  void useGeometryShaders();
 
  private:
   friend class RenderGraph;
@@ -129,8 +133,9 @@ class RenderGraph {
     std::string origin;
     std::vector<Use> uses;
     std::vector<std::function<PassDecision()>> conditions;
-    std::string sideEffect;    ///< non-empty: never culled for lack of readers
-    std::string unreadReason;  ///< report text when culled for lack of readers (empty: default)
+    std::string sideEffect;        ///< non-empty: never culled for lack of readers
+    std::string unreadReason;      ///< report text when culled for lack of readers (empty: default)
+    bool geometryShaders = false;  ///< PassBuilder::useGeometryShaders
     RecordFn record;
     std::vector<std::string> errors;  ///< misuse found during setup; the pass is culled
   };

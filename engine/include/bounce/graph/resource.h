@@ -96,6 +96,7 @@ struct ResourceState {
 };
 
 /// The stage, access mask and layout one use implies.
-ResourceState accessState(Access access, Queue queue, bool isImage, bool depthFormat);
+ResourceState accessState(Access access, Queue queue, bool isImage, bool depthFormat,
+                          bool geometryShaders = false);
 
 }  // namespace bounce

@@ -10,6 +10,7 @@
 #include "bounce/frame/quality_knobs.h"
 #include "bounce/plugin/plugin_descriptor.h"
 #include "bounce/scene/object_parameters.h"
+#include "bounce/scene/scene_data_requests.h"
 #include "bounce/scene/scene_volume.h"
 
 #include <string>
@@ -26,7 +27,8 @@ struct EngineServices {
   DebugViewRegistry& debugViews;
   AovRegistry& aovs;
   QualityKnobRegistry& knobs;
-  SceneVolumeKinds& volumeKinds;  ///< last, so plugins built before it keep their offsets
+  SceneVolumeKinds& volumeKinds;
+  SceneDataRequests& sceneData;  ///< last, so plugins built before it keep their offsets
 
   /// Removes everything `owner` registered, from every registry.
   void removeOwnedBy(OwnerId owner);
@@ -81,6 +83,13 @@ class PluginContext {
   /// A kind of scene volume: glTF nodes whose extras hold an object under `desc.name`
   /// load as SceneVolume entries of Scene::volumes() (e.g. "ProbeVolume").
   void addSceneVolumeKind(SceneVolumeKindDesc desc) { services_.volumeKinds.add(std::move(desc), owner_); }
+
+  /// Asks for the GPU scene's simplified index lists (PassContext::drawScene with a
+  /// maxWorldError) on the frames `wanted` returns true; without any such request the
+  /// engine builds none.
+  void requestSimplifiedMeshes(std::function<bool()> wanted) {
+    services_.sceneData.addSimplifiedMeshes(std::move(wanted), owner_);
+  }
 
   /// Read access to engine state.
   const CVarRegistry& cvars() const { return services_.cvars; }
