@@ -71,12 +71,15 @@ const int VXGI_MAX_STEPS = 512;
 const float VXGI_SURFACE_CLEARANCE = 1.5;
 // Edge of the voxels a sample reads, per metre of cone diameter. A trilinear sample of
 // voxels of edge V spreads what it reads over a tent of half-width V (variance V²/6 per
-// axis), and each voxel's content over the voxel (V²/12): a standard deviation of V/2.
-// The cone's cross-section, a disk of diameter D, has D/4 along each axis in its plane,
-// so V = D/2 filters the cone's own cross-section. V = D (what this was) blurred every
-// sample over twice the cone's width, into the dark back faces and neighbouring surfaces
-// around it: the Cornell box's one bounce read 0.77 of the path tracer, 0.91 with D/2.
-const float VXGI_VOXELS_PER_DIAMETER = 0.5;
+// axis) and each voxel's content over the voxel (V²/12): variance V²/4. vxgiSample blends
+// the level of voxel V = d·2^−f with the next, 2V, by f = fract(log2(d / v0)): variance
+// d²·2^−2f·(1 + 3f)/4, whose mean over f (a cone widens through every f) is 0.293 d². The
+// cone's cross-section, a disk of diameter D, has variance D²/16 along each axis in its
+// plane; equal when d = D / (4·√0.293) = 0.46 D. With d = D (what this was) every sample
+// spread over twice the cone's width, into the dark back faces and neighbouring surfaces
+// around it: the Cornell box's one bounce read 0.77 of the path tracer, 0.95 with 0.46
+// (0.91 with 0.5, 1.09 with 0.35, 1.20 with 0.25: narrower filters over-light).
+const float VXGI_VOXELS_PER_DIAMETER = 0.46;
 
 ConeTracingResults TraceCone(ConeTracingArguments args) {
   ConeTracingResults res;
