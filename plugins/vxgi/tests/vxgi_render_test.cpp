@@ -104,12 +104,30 @@ TEST_F(VxgiRender, OpacityAndEmittanceDebugViewsDiffer) {
   ASSERT_TRUE(opacity.graph.executed("VXGI.DebugVoxels"));
   const ImageBuffer& a = opacity.images.at("display");
   const ImageBuffer& b = emittance.images.at("display");
-  double diff = 0;
+  // They differ over the image in every channel (mean absolute difference per channel).
+  for (uint32_t c = 0; c < 3; ++c) {
+    double diff = 0;
+    for (uint32_t y = 0; y < 32; ++y)
+      for (uint32_t x = 0; x < 32; ++x) diff += std::abs(a.at(x, y, c) - b.at(x, y, c));
+    EXPECT_GT(diff / 1024.0, 0.05) << "channel " << c;
+  }
+  // The opacity view is grey: equal channels at every pixel.
+  double colour = 0;
   for (uint32_t y = 0; y < 32; ++y)
-    for (uint32_t x = 0; x < 32; ++x) diff += std::abs(a.at(x, y, 0) - b.at(x, y, 0));
-  EXPECT_GT(diff / 1024.0, 0.05);
-  // The opacity view is grey: equal channels everywhere.
-  EXPECT_NEAR(a.at(16, 16, 0), a.at(16, 16, 1), 1e-3);
+    for (uint32_t x = 0; x < 32; ++x)
+      colour = std::max({colour, double(std::abs(a.at(x, y, 0) - a.at(x, y, 1))),
+                         double(std::abs(a.at(x, y, 1) - a.at(x, y, 2)))});
+  EXPECT_LT(colour, 1e-3);
+  // The emittance view shows the walls' colours: the red wall's voxels (left edge of the
+  // view) redder than green, the green wall's (right edge) greener than red. Measured
+  // 2.3× and 1.47× (the tone-mapped display, sRGB, and lit white voxels at the regions'
+  // edges dilute it); bound 1.2×.
+  const Stats leftRed = stats(b, 0, 0, 8, 3, 20), leftGreen = stats(b, 1, 0, 8, 3, 20);
+  const Stats rightRed = stats(b, 0, 29, 8, 32, 20), rightGreen = stats(b, 1, 29, 8, 32, 20);
+  std::printf("emittance view: left wall r %.3f g %.3f, right wall r %.3f g %.3f\n", leftRed.mean,
+              leftGreen.mean, rightRed.mean, rightGreen.mean);
+  EXPECT_GT(leftRed.mean, 1.2 * leftGreen.mean);
+  EXPECT_GT(rightGreen.mean, 1.2 * rightRed.mean);
 }
 
 /// Mean over red, green and blue of the pixels [x0, x1) × [y0, y1).
@@ -217,11 +235,11 @@ TEST_F(VxgiRender, LowDetailMeshesVoxelizeFewerTrianglesAndKeepTheLight) {
   for (size_t l = 0; l < 3; ++l) {
     std::printf("level %zu: %llu triangles at full detail, %llu at one voxel of error\n", l,
                 (unsigned long long)fullTriangles[l], (unsigned long long)lowTriangles[l]);
-    EXPECT_LE(lowTriangles[l], fullTriangles[l]) << "level " << l;
+    // Every level draws fewer triangles: the sphere's coarsest list (about 120 of its 960)
+    // is within one voxel even at level 0 (measured 1032 → 192 at every level); bound:
+    // at least half the sphere's triangles gone at each level.
+    EXPECT_LT(lowTriangles[l] + 480, fullTriangles[l]) << "level " << l;
   }
-  // Every level draws fewer triangles: the sphere's coarsest list (about 120 of its 960)
-  // is within one voxel even at level 0 (measured 1032 → 192 at every level).
-  EXPECT_LT(lowTriangles[2] + 480, fullTriangles[2]);
   // The light hardly changes: mean relative difference of the indirect irradiance over
   // the image (measured 2.3%).
   const ImageBuffer &a = full.images.at("indirect-irradiance"), &b = low.images.at("indirect-irradiance");
