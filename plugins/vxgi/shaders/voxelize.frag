@@ -112,6 +112,8 @@ void main() {
   // A 10 cm wall's sunlit outer face so put 7% of its density and emittance into the two
   // voxels in front of its inner face, where the room's cones read it (issue 16).
   float depth = u[gAxis];
+  // gNormal is unit (the geometry shader drops degenerate triangles), so its dominant
+  // component is at least 1/√3: the 1e-6 never binds, and the min is only the bound above.
   vec3 an = abs(gNormal);
   float span = min(0.5 * (an.x + an.y + an.z - an[gAxis]) / max(an[gAxis], 1e-6), 1.0);
   vec4 params = materialParams[draw.material];
