@@ -76,7 +76,7 @@ SUNLIT_ALBEDO = 0.6
 SUNLIT_SUN_IRRADIANCE = 10.0       # W/m^2 at normal incidence
 SUNLIT_SUN_ELEVATION_DEGREES = 30.0  # the sun shines in towards -z, down at this angle
 SUNLIT_THIN_WALL_THICKNESS = 0.1   # m: thinner than the coarse voxels the leak test uses
-SUNLIT_WINDOW_OFFSET = 1.0         # m along x: the opening near the right wall
+SUNLIT_WINDOW_OFFSET = 1.0         # m along +x: the opening 0.4 m from the +x wall
 SUNLIT_BACK_CAMERA_TILT_DEGREES = -20.0
 TINY_SCENE_SIZE = 0.1              # m, a floor tile with a 4 cm box: inside one 1 m voxel
 
@@ -485,9 +485,9 @@ def sunlit_room(thickness=SUNLIT_WALL_THICKNESS, window_x=0, look_at_window=Fals
     s.light("Sun", "directional", SUNLIT_SUN_IRRADIANCE, (0, h + 2, hz + 3),
             x_rotation(-SUNLIT_SUN_ELEVATION_DEGREES), extras=INDIRECT_LIGHT_FLAG)
     if look_at_window:
-        # From the back of the room, turned round (180 degrees about y, then tilted down
-        # about x: the quaternion product y(180) x(tilt)):
-        # the window wall, the floor in front of it with the sun patch, both side walls.
+        # From the back of the room, turned round and tilted down (the quaternion product
+        # y(180) x(tilt)): the window wall, the floor in front of it with the sun patch, and
+        # both side walls.
         half = math.radians(SUNLIT_BACK_CAMERA_TILT_DEGREES) / 2
         s.camera("Back", (0, 1.6, -hz + 0.2), [0.0, math.cos(half), -math.sin(half), 0.0], yfov=1.2)
     else:
