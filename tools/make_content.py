@@ -75,6 +75,9 @@ SUNLIT_WINDOW = (1.2, 1.0, 1.0)    # m: width, height, sill height; in the +z wa
 SUNLIT_ALBEDO = 0.6
 SUNLIT_SUN_IRRADIANCE = 10.0       # W/m^2 at normal incidence
 SUNLIT_SUN_ELEVATION_DEGREES = 30.0  # the sun shines in towards -z, down at this angle
+SUNLIT_THIN_WALL_THICKNESS = 0.1   # m: thinner than the coarse voxels the leak test uses
+SUNLIT_WINDOW_OFFSET = 1.0         # m along +x: the opening 0.4 m from the +x wall
+SUNLIT_BACK_CAMERA_TILT_DEGREES = -20.0
 TINY_SCENE_SIZE = 0.1              # m, a floor tile with a 4 cm box: inside one 1 m voxel
 
 # --- glTF constants ---------------------------------------------------------------------
@@ -452,13 +455,18 @@ def x_rotation(degrees):
     return [math.sin(half), 0.0, 0.0, math.cos(half)]
 
 
-def sunlit_room():
-    """A closed room with 20 cm walls lit only by the sun through a window: the light
-    enters as a patch on the floor and reaches the rest by bouncing; the sunlit outer face
-    of the window wall must not leak in."""
-    s = GltfScene("closed room, 20 cm walls, lit only by the sun through a window in the +z wall")
+def sunlit_room(thickness=SUNLIT_WALL_THICKNESS, window_x=0, look_at_window=False):
+    """A closed room lit only by the sun through a window in the +z wall: the light enters
+    as a patch on the floor and reaches the rest by bouncing; the sunlit outer faces (the
+    window wall's and the roof's) must not leak in. `window_x` moves the opening along x;
+    `look_at_window` puts the camera in the back of the room, facing the window wall."""
+    t = thickness
+    note = "closed room, %g cm walls, lit only by the sun through a window in the +z wall" % round(t * 100, 3)
+    if window_x:
+        note += ", the window %g m off centre" % window_x
+    s = GltfScene(note)
     wall = s.material("Wall", (SUNLIT_ALBEDO,) * 3, extras=VOXELIZE_FLAG)
-    (w, h, d), t = SUNLIT_ROOM_SIZE, SUNLIT_WALL_THICKNESS
+    w, h, d = SUNLIT_ROOM_SIZE
     ww, wh, sill = SUNLIT_WINDOW
     hx, hz = w / 2, d / 2
     s.object("Floor", Geometry().box((w + 2 * t, t, d + 2 * t)), wall, (0, -t / 2, 0))
@@ -466,17 +474,24 @@ def sunlit_room():
     s.object("Back", Geometry().box((w, h, t)), wall, (0, h / 2, -hz - t / 2))
     s.object("Left", Geometry().box((t, h, d + 2 * t)), wall, (-hx - t / 2, h / 2, 0))
     s.object("Right", Geometry().box((t, h, d + 2 * t)), wall, (hx + t / 2, h / 2, 0))
-    # The window wall in four pieces around the opening.
+    # The window wall in four pieces around the opening (x in window_x +- ww / 2).
     z = hz + t / 2
-    side = (w - ww) / 2
-    s.object("FrontLeft", Geometry().box((side, h, t)), wall, (-hx + side / 2, h / 2, z))
-    s.object("FrontRight", Geometry().box((side, h, t)), wall, (hx - side / 2, h / 2, z))
-    s.object("BelowWindow", Geometry().box((ww, sill, t)), wall, (0, sill / 2, z))
+    left, right = window_x - ww / 2 + hx, hx - (window_x + ww / 2)  # widths beside the opening
+    s.object("FrontLeft", Geometry().box((left, h, t)), wall, (-hx + left / 2, h / 2, z))
+    s.object("FrontRight", Geometry().box((right, h, t)), wall, (hx - right / 2, h / 2, z))
+    s.object("BelowWindow", Geometry().box((ww, sill, t)), wall, (window_x, sill / 2, z))
     top = h - sill - wh
-    s.object("AboveWindow", Geometry().box((ww, top, t)), wall, (0, sill + wh + top / 2, z))
+    s.object("AboveWindow", Geometry().box((ww, top, t)), wall, (window_x, sill + wh + top / 2, z))
     s.light("Sun", "directional", SUNLIT_SUN_IRRADIANCE, (0, h + 2, hz + 3),
             x_rotation(-SUNLIT_SUN_ELEVATION_DEGREES), extras=INDIRECT_LIGHT_FLAG)
-    s.camera("Inside", (0, 1.6, hz - 0.2), x_rotation(-20.0), yfov=1.2)
+    if look_at_window:
+        # From the back of the room, turned round and tilted down (the quaternion product
+        # y(180) x(tilt)): the window wall, the floor in front of it with the sun patch, and
+        # both side walls.
+        half = math.radians(SUNLIT_BACK_CAMERA_TILT_DEGREES) / 2
+        s.camera("Back", (0, 1.6, -hz + 0.2), [0.0, math.cos(half), -math.sin(half), 0.0], yfov=1.2)
+    else:
+        s.camera("Inside", (0, 1.6, hz - 0.2), x_rotation(-20.0), yfov=1.2)
     return s
 
 
@@ -510,6 +525,12 @@ def main():
     tiny_scene().write(os.path.join(tests, "tiny_scene.gltf"))
     sunlit_room().write(os.path.join(tests, "sunlit_room.gltf"))
     sunlit_room_air_volume().write(os.path.join(tests, "sunlit_room_air_volume.gltf"))
+    sunlit_room(look_at_window=True).write(os.path.join(tests, "sunlit_room_window_view.gltf"))
+    sunlit_room(SUNLIT_THIN_WALL_THICKNESS, look_at_window=True).write(
+        os.path.join(tests, "sunlit_room_10cm_window_view.gltf"))
+    sunlit_room(SUNLIT_THIN_WALL_THICKNESS).write(os.path.join(tests, "sunlit_room_10cm.gltf"))
+    sunlit_room(SUNLIT_THIN_WALL_THICKNESS, window_x=SUNLIT_WINDOW_OFFSET, look_at_window=True).write(
+        os.path.join(tests, "sunlit_room_10cm_offset_window.gltf"))
 
 
 if __name__ == "__main__":

@@ -103,10 +103,19 @@ void main() {
   ivec3 c = ivec3(floor(u));
   // The voxels along the projection axis that this pixel's piece of the surface passes
   // through: its depth ± half the depth change across the pixel, extended behind the
-  // surface by the material's thickness (in voxels; 1 = the surface alone).
+  // surface by the material's thickness (in voxels; 1 = the surface alone). On the plane,
+  // depth changes by |n_a| / |n_axis| voxels per pixel along in-plane axis a, so half a
+  // pixel each way spans (|n_a| + |n_b|) / (2 |n_axis|), at most 1 (n_axis is the largest
+  // component). It comes from the flat normal, not dFdx/dFdy: after the discard above the
+  // derivatives are undefined wherever a quad neighbour was discarded, and on lavapipe
+  // some read up to the old 2-voxel clamp on flat faces of constant depth (measured).
+  // A 10 cm wall's sunlit outer face so put 7% of its density and emittance into the two
+  // voxels in front of its inner face, where the room's cones read it (issue 16).
   float depth = u[gAxis];
-  float span = 0.5 * (abs(dFdx(depth)) + abs(dFdy(depth)));
-  span = min(span, 2.0);  // the dominant axis bounds it by √2; guard against NaN derivatives
+  // gNormal is unit (the geometry shader drops degenerate triangles), so its dominant
+  // component is at least 1/√3: the 1e-6 never binds, and the min is only the bound above.
+  vec3 an = abs(gNormal);
+  float span = min(0.5 * (an.x + an.y + an.z - an[gAxis]) / max(an[gAxis], 1e-6), 1.0);
   vec4 params = materialParams[draw.material];
   float behind = max(params.x - 1.0, 0.0) * -sign(gNormal[gAxis]);
   float first = floor(min(depth - span, depth - span + behind)), last = floor(max(depth + span, depth + span + behind));

@@ -105,12 +105,30 @@ TEST_F(VxgiRender, OpacityAndEmittanceDebugViewsDiffer) {
   ASSERT_TRUE(opacity.graph.executed("VXGI.DebugVoxels"));
   const ImageBuffer& a = opacity.images.at("display");
   const ImageBuffer& b = emittance.images.at("display");
-  double diff = 0;
+  // They differ over the image in every channel (mean absolute difference per channel).
+  for (uint32_t c = 0; c < 3; ++c) {
+    double diff = 0;
+    for (uint32_t y = 0; y < 32; ++y)
+      for (uint32_t x = 0; x < 32; ++x) diff += std::abs(a.at(x, y, c) - b.at(x, y, c));
+    EXPECT_GT(diff / 1024.0, 0.05) << "channel " << c;
+  }
+  // The opacity view is grey: equal channels at every pixel.
+  double colour = 0;
   for (uint32_t y = 0; y < 32; ++y)
-    for (uint32_t x = 0; x < 32; ++x) diff += std::abs(a.at(x, y, 0) - b.at(x, y, 0));
-  EXPECT_GT(diff / 1024.0, 0.05);
-  // The opacity view is grey: equal channels everywhere.
-  EXPECT_NEAR(a.at(16, 16, 0), a.at(16, 16, 1), 1e-3);
+    for (uint32_t x = 0; x < 32; ++x)
+      colour = std::max({colour, double(std::abs(a.at(x, y, 0) - a.at(x, y, 1))),
+                         double(std::abs(a.at(x, y, 1) - a.at(x, y, 2)))});
+  EXPECT_LT(colour, 1e-3);
+  // The emittance view shows the walls' colours: the red wall's voxels (left edge of the
+  // view) redder than green, the green wall's (right edge) greener than red. Measured
+  // 2.3× and 1.47× (the tone-mapped display, sRGB, and lit white voxels at the regions'
+  // edges dilute it); bound 1.2×.
+  const Stats leftRed = stats(b, 0, 0, 8, 3, 20), leftGreen = stats(b, 1, 0, 8, 3, 20);
+  const Stats rightRed = stats(b, 0, 29, 8, 32, 20), rightGreen = stats(b, 1, 29, 8, 32, 20);
+  std::printf("emittance view: left wall r %.3f g %.3f, right wall r %.3f g %.3f\n", leftRed.mean,
+              leftGreen.mean, rightRed.mean, rightGreen.mean);
+  EXPECT_GT(leftRed.mean, 1.2 * leftGreen.mean);
+  EXPECT_GT(rightGreen.mean, 1.2 * rightRed.mean);
 }
 
 /// Mean over red, green and blue of the pixels [x0, x1) × [y0, y1).
@@ -128,9 +146,11 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
   // with their front faces, and a cone whose filter reached behind the surface it leaves
   // was stopped by its own wall. Here that read 0.35 over the image and 0.19–0.34 on the
   // walls; at 128² with the default 128³ map, 0.29 and 0.04–0.15.
-  // Bounds: the image within [0.6, 1.25] of the reference and each wall and the ceiling
-  // within [0.5, 1.5] (measured 0.75 over the image, walls 0.64–0.69, ceiling 0.91; 0.74
-  // at 128² with 128³: cone footprints still lose some light in corners).
+  // With each sample's filter matched to the cone's cross-section (trace_cone.glsl,
+  // VXGI_VOXELS_PER_DIAMETER) it measures 0.953 over the image, walls 0.883–0.966, ceiling
+  // 0.999; before, with filters twice the cone's width, 0.77, walls 0.65–0.70, ceiling 0.90.
+  // Bounds: the measured values ± 0.06 (the reference's noise, < 3%, plus as much again):
+  // the image within [0.89, 1.02], each wall and the ceiling within [0.82, 1.06].
   // Every pixel traced: this measures the cones; sparse tracing has its own test below.
   start("content/cornell_box.gltf", with(kSmall, {"r.VXGI.MapSize=64", "r.VXGI.DiffuseSparsity=1"}), "VXGI");
   RenderedFrame vxgi = render(32, 32, {"indirect-irradiance"});
@@ -157,8 +177,8 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
         meanRgb(a, r.x0, r.y0, r.x1, r.y1) / std::max(meanRgb(b, r.x0, r.y0, r.x1, r.y1), 1e-9);
     std::printf("%s: VXGI / one-bounce reference = %.3f\n", r.name, ratio);
     const bool whole = std::string(r.name) == "image";
-    EXPECT_GT(ratio, whole ? 0.6 : 0.5) << r.name;
-    EXPECT_LT(ratio, whole ? 1.25 : 1.5) << r.name;
+    EXPECT_GT(ratio, whole ? 0.89 : 0.82) << r.name;
+    EXPECT_LT(ratio, whole ? 1.02 : 1.06) << r.name;
   }
 }
 
@@ -285,11 +305,11 @@ TEST_F(VxgiRender, LowDetailMeshesVoxelizeFewerTrianglesAndKeepTheLight) {
   for (size_t l = 0; l < 3; ++l) {
     std::printf("level %zu: %llu triangles at full detail, %llu at one voxel of error\n", l,
                 (unsigned long long)fullTriangles[l], (unsigned long long)lowTriangles[l]);
-    EXPECT_LE(lowTriangles[l], fullTriangles[l]) << "level " << l;
+    // Every level draws fewer triangles: the sphere's coarsest list (about 120 of its 960)
+    // is within one voxel even at level 0 (measured 1032 → 192 at every level); bound:
+    // at least half the sphere's triangles gone at each level.
+    EXPECT_LT(lowTriangles[l] + 480, fullTriangles[l]) << "level " << l;
   }
-  // Every level draws fewer triangles: the sphere's coarsest list (about 120 of its 960)
-  // is within one voxel even at level 0 (measured 1032 → 192 at every level).
-  EXPECT_LT(lowTriangles[2] + 480, fullTriangles[2]);
   // The light hardly changes: mean relative difference of the indirect irradiance over
   // the image (measured 2.3%).
   const ImageBuffer &a = full.images.at("indirect-irradiance"), &b = low.images.at("indirect-irradiance");
