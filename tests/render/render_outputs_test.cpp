@@ -6,6 +6,8 @@
 #include "bounce/graph/channels.h"
 
 #include <fstream>
+#include <set>
+#include <string>
 
 namespace bounce::test {
 namespace {
@@ -26,10 +28,25 @@ TEST_F(RenderOutputs, AovsHaveTheDocumentedMeaning) {
 }
 
 TEST_F(RenderOutputs, NoGiTechniqueAddsNoPassAndNoResource) {
-  start("content/cornell_box.gltf");
+  // The same scene with a technique selected is the control: its frame has passes from
+  // the plugin and resources first used by them; with "none" neither may appear.
+  start("content/cornell_box.gltf", {}, "Ambient");
+  RenderedFrame with = render(32, 32, {"radiance"});
+  std::set<std::string> pluginPasses, pluginResources;
+  for (const CompiledPass& p : with.graph.passes)
+    if (p.origin != "engine") pluginPasses.insert(p.name);
+  for (const CompiledResource& r : with.graph.resources)
+    if (r.used() && with.graph.passes[size_t(r.firstPass)].origin != "engine") pluginResources.insert(r.name);
+  ASSERT_FALSE(pluginPasses.empty()) << "the control frame ran no plugin pass";
+  ASSERT_FALSE(pluginResources.empty()) << "the control frame created no resource of its own";
+  engine->console().execute("r.GI.Technique none");
   RenderedFrame none = render(32, 32, {"radiance"});
-  for (const CompiledPass& p : none.graph.passes) EXPECT_EQ(p.origin, "engine") << p.name;
-  for (const CompiledResource& r : none.graph.resources) EXPECT_EQ(r.name.rfind("gi.", 0), std::string::npos);
+  for (const CompiledPass& p : none.graph.passes) {
+    EXPECT_EQ(p.origin, "engine") << p.name;
+    EXPECT_FALSE(pluginPasses.count(p.name)) << p.name;
+  }
+  for (const CompiledResource& r : none.graph.resources)
+    EXPECT_FALSE(pluginResources.count(r.name)) << r.name;
 }
 
 TEST_F(RenderOutputs, DebugViewReplacesTheDisplayedImageAndCullsToneMapping) {
