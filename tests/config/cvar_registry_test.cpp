@@ -33,7 +33,8 @@ TEST(CVarRegistry, DeclaresTypedVariablesWithDefaults) {
 TEST(CVarRegistry, StringValuePrintsAsTextThatReadsBackTheSame) {
   CVarRegistry r;
   auto s = r.add<std::string>({.name = "t.String", .defaultValue = "x"});
-  for (const std::string value : {"\"\"\"", "\"a b\"", "\"\"", "plain", "\"half", " lead", "trail\v", "\x05\"\x05\"\"\v"}) {
+  for (const std::string value :
+       {"\"\"\"", "\"a b\"", "\"\"", "plain", "\"half", " lead", "trail\v", "\x05\"\x05\"\"\v"}) {
     ASSERT_TRUE(r.set(s.cvar(), "\"" + value + "\"", SetBy::Console).ok()) << value;
     ASSERT_EQ(s.get(), value);
     std::string error;
@@ -133,6 +134,24 @@ TEST(CVarRegistry, RangeRejectsOrClampsAsDeclared) {
   EXPECT_FLOAT_EQ(cl.get(), 2.0f);
   EXPECT_EQ(r.set("t.Clamp", "-1", SetBy::Console).status, Status::Clamped);
   EXPECT_FLOAT_EQ(cl.get(), 0.0f);
+}
+
+TEST(CVarRegistry, AFloatVariableAcceptsItsOwnBoundsWithoutAWarning) {
+  // 0.0001 as a float is 9.99999974e-05, below the double 0.0001 of the declaration: the
+  // bound itself must still be inside (it read "0.0001 is outside [0.0001, 10000]; clamped").
+  CVarRegistry r;
+  auto scale = r.add<float>({.name = "t.Scale",
+                             .defaultValue = 1.0f,
+                             .min = 0.0001,
+                             .max = 10000.0,
+                             .outOfRange = RangePolicy::Clamp});
+  for (const char* text : {"0.0001", "10000"}) {
+    SetResult s = r.set("t.Scale", text, SetBy::Console);
+    EXPECT_EQ(s.status, Status::Changed) << text << ": " << s.message;
+    EXPECT_TRUE(s.message.empty()) << s.message;
+  }
+  EXPECT_FLOAT_EQ(scale.get(), 10000.0f);
+  EXPECT_EQ(r.set("t.Scale", "0.00005", SetBy::Console).status, Status::Clamped);  // still a range
 }
 
 TEST(CVarRegistry, AllowedValuesAndCustomValidation) {

@@ -151,10 +151,13 @@ namespace {
 enum class RangeOutcome { Inside, Clamped, Refused };
 
 /// Checks `*x` (shown as `shown`) against the variable's range in double precision, so
-/// the test happens before the value is narrowed to int32 or float.
+/// the test happens before the value is narrowed to int32 or float. A float variable's
+/// bounds are compared as floats: 0.0001f is 9.99999974e-05, below the double 0.0001 its
+/// declaration names, and writing the bound itself must not read as out of range.
 RangeOutcome checkRange(const CVar& c, double* x, std::string_view shown, std::string* message) {
-  const bool below = c.min() && *x < *c.min();
-  const bool above = c.max() && *x > *c.max();
+  auto bound = [&c](double b) { return c.type() == CVarType::Float ? double(float(b)) : b; };
+  const bool below = c.min() && *x < bound(*c.min());
+  const bool above = c.max() && *x > bound(*c.max());
   if (!below && !above) return RangeOutcome::Inside;
   if (c.rangePolicy() == RangePolicy::Reject) {
     *message = fmt::format("{}: {} is outside {}", c.name(), shown, rangeText(c));
