@@ -17,9 +17,11 @@
 // them). After the timed frames of each size and variant it renders one more, untimed
 // frame with work counting on (shaders' countWork calls compile in and count; the atomics
 // would distort the times). Each pass's work is what it reported while recording
-// (PassContext::addWork, median over the timed frames) plus what its shaders counted; a
-// second table per size and variant gives, per pass and unit, the work per frame, the rate
-// its median time gives, the ceiling for that unit and the fraction of it reached.
+// (PassContext::addWork, median over the timed frames that ran it) plus what its shaders
+// counted (only if it ran in the counted frame: an incremental pass that had nothing to do
+// then shows its recorded work alone); a second table per size and variant gives, per pass
+// and unit, the work per frame, the rate its median time gives, the ceiling for that unit
+// and the fraction of it reached.
 // `--json FILE` writes the ceilings and, per size and variant, each pass's ms, work,
 // ceiling and fraction.
 
@@ -249,6 +251,12 @@ int main(int argc, char** argv) {
     variants.push_back(std::move(*v));
   }
   if (variants.empty()) variants.push_back({});
+  // A path that cannot be written fails now, not after minutes of measuring.
+  if (std::string error;
+      !jsonPath.empty() && !bounce::writeJsonFile(jsonPath, nlohmann::json::object(), &error)) {
+    bounce::app::printError("bounce-render-bench", error);
+    return 2;
+  }
 
   bounce::EngineOptions options;
   options.userIni = std::filesystem::path();  // reproducible: no per-user settings
