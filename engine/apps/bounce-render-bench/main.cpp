@@ -42,8 +42,10 @@
 
 #include <algorithm>
 #include <array>
+#include <fstream>
 #include <map>
 #include <optional>
+#include <thread>
 
 namespace {
 
@@ -171,6 +173,21 @@ void printTable(const std::vector<std::string>& columns, const std::vector<const
   }
 }
 
+/// On a CPU device (lavapipe) the passes and the ceilings share the cores with everything
+/// else, and they are measured at different moments: a busy machine makes the fractions
+/// meaningless (above 100% even), so say so.
+void warnIfMachineIsBusy(const bounce::gpu::Device& device) {
+  if (!device.isCpu()) return;
+  std::ifstream in("/proc/loadavg");
+  double load = 0.0;
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  if (in >> load && load > double(cores))
+    fmt::print(stderr,
+               "bounce-render-bench: warning: load average {:.1f} on {} cores; the device is the CPU, so the "
+               "ceilings and times vary with the other load and the fractions are unreliable\n",
+               load, cores);
+}
+
 /// Prints the ceilings and, per size and variant, each pass's work against them; writes
 /// the JSON. Returns the exit status.
 int reportWork(std::map<std::pair<size_t, uint32_t>, Measurement>& results,
@@ -282,6 +299,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   bounce::Renderer renderer(engine, *device);
+  warnIfMachineIsBusy(*device);
   std::optional<bounce::DeviceCeilings> ceilings;
   if (!noCeilings) {
     try {
