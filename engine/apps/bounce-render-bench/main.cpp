@@ -6,10 +6,24 @@
 //
 //   bounce-render-bench [--scene FILE] [--gi NAME] [--sizes 256,512] [--frames N]
 //                       [--set CVAR=VALUE]... [--variant "LABEL: CVAR=VALUE ..."]...
-//                       [--device NAME]
+//                       [--device NAME] [--json FILE] [--no-ceilings]
 //
 // Passes named NAME.L<n> (one per level of a multi-level structure) are summed into one
 // NAME.L* row (--per-level shows each).
+//
+// Against the device's limits: before the frames it measures the device's ceilings with
+// compute microbenchmarks (device_ceilings.h: trilinear RGBA16F 3D samples/s, storage
+// buffer and storage image bytes/s, FMA flops/s; about a second; --no-ceilings skips
+// them). After the timed frames of each size and variant it renders one more, untimed
+// frame with work counting on (shaders' countWork calls compile in and count; the atomics
+// would distort the times). Each pass's work is what it reported while recording
+// (PassContext::addWork, median over the timed frames that ran it) plus what its shaders
+// counted (only if it ran in the counted frame: an incremental pass that had nothing to do
+// then shows its recorded work alone); a second table per size and variant gives, per pass
+// and unit, the work per frame, the rate its median time gives, the ceiling for that unit
+// and the fraction of it reached.
+// `--json FILE` writes the ceilings and, per size and variant, each pass's ms, work,
+// ceiling and fraction.
 
 #include "bounce-render-bench/light_move_convergence.h"
 #include "bounce/core/log.h"
@@ -19,18 +33,28 @@
 #include "scene/generated_scenes.h"
 
 #include "bounce-render-bench/bench_variant.h"
+#include "bounce-render-bench/device_ceilings.h"
+#include "bounce-render-bench/work_report.h"
 #include "parse_arguments.h"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
+#include <fstream>
 #include <map>
+#include <optional>
+#include <thread>
 
 namespace {
 
+using WorkAmounts = std::array<double, bounce::kWorkUnitCount>;
+
 struct Measurement {
-  std::map<std::string, double> passMs;  ///< median per pass (and per NAME.L* group)
+  std::map<std::string, double> passMs;     ///< median per pass (and per NAME.L* group)
+  std::map<std::string, WorkAmounts> work;  ///< per frame: recorded median + shader counts
+  std::map<std::string, std::array<bool, bounce::kWorkUnitCount>> gpuCounted;
   double frameMs = 0.0;
   uint64_t persistentBytes = 0;
 };
@@ -62,6 +86,36 @@ void addLevelSums(std::map<std::string, double>& ms) {
   for (const auto& [pass, value] : ms)
     if (auto group = bounce::levelGroup(pass)) sums[*group] += value;
   ms.insert(sums.begin(), sums.end());
+}
+
+/// The same for work: a NAME.L* row did the work of all its members.
+void addLevelSums(Measurement& m) {
+  addLevelSums(m.passMs);
+  std::map<std::string, WorkAmounts> sums;
+  std::map<std::string, std::array<bool, bounce::kWorkUnitCount>> counted;
+  for (const auto& [pass, amounts] : m.work)
+    if (auto group = bounce::levelGroup(pass))
+      for (size_t u = 0; u < bounce::kWorkUnitCount; ++u) {
+        sums[*group][u] += amounts[u];
+        counted[*group][u] = counted[*group][u] || m.gpuCounted[pass][u];
+      }
+  m.work.insert(sums.begin(), sums.end());
+  m.gpuCounted.insert(counted.begin(), counted.end());
+}
+
+/// One size and variant's passes, in the table's row order, for the work report.
+bounce::MeasuredColumn measuredColumn(const Measurement& m, uint32_t size, const std::string& variant,
+                                      const std::vector<std::string>& rows) {
+  bounce::MeasuredColumn c{size, variant, m.frameMs, {}};
+  for (const std::string& row : rows) {
+    auto ms = m.passMs.find(row);
+    if (ms == m.passMs.end()) continue;  // not run at this size or variant
+    bounce::MeasuredPass p{row, ms->second, {}, {}};
+    if (auto w = m.work.find(row); w != m.work.end()) p.work = w->second;
+    if (auto g = m.gpuCounted.find(row); g != m.gpuCounted.end()) p.gpuCounted = g->second;
+    c.passes.push_back(std::move(p));
+  }
+  return c;
 }
 
 /// One table: a row per pass, a column per `columns` entry; sizes get a column with the
@@ -119,6 +173,48 @@ void printTable(const std::vector<std::string>& columns, const std::vector<const
   }
 }
 
+/// On a CPU device (lavapipe) the passes and the ceilings share the cores with everything
+/// else, and they are measured at different moments: a busy machine makes the fractions
+/// meaningless (above 100% even), so say so.
+void warnIfMachineIsBusy(const bounce::gpu::Device& device) {
+  if (!device.isCpu()) return;
+  std::ifstream in("/proc/loadavg");
+  double load = 0.0;
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  if (in >> load && load > double(cores))
+    fmt::print(stderr,
+               "bounce-render-bench: warning: load average {:.1f} on {} cores; the device is the CPU, so the "
+               "ceilings and times vary with the other load and the fractions are unreliable\n",
+               load, cores);
+}
+
+/// Prints the ceilings and, per size and variant, each pass's work against them; writes
+/// the JSON. Returns the exit status.
+int reportWork(std::map<std::pair<size_t, uint32_t>, Measurement>& results,
+               const std::vector<uint32_t>& sizes, const std::vector<bounce::BenchVariant>& variants,
+               const std::vector<std::string>& rows, const std::optional<bounce::DeviceCeilings>& ceilings,
+               const bounce::gpu::Device& device, const std::string& scene, const std::string& technique,
+               uint32_t frames, const std::string& jsonPath) {
+  const bounce::DeviceCeilings* c = ceilings ? &*ceilings : nullptr;
+  if (c) fmt::print("\n{}", bounce::ceilingsTable(*c));
+  std::vector<bounce::MeasuredColumn> columns;
+  for (uint32_t s : sizes)
+    for (size_t v = 0; v < variants.size(); ++v) {
+      columns.push_back(measuredColumn(results[{v, s}], s, variants[v].label, rows));
+      fmt::print("\nWork against the ceilings, {}²{}:\n\n{}", s,
+                 variants[v].label.empty() ? "" : " " + variants[v].label,
+                 bounce::workTable(columns.back(), c));
+    }
+  if (jsonPath.empty()) return 0;
+  std::string error;
+  if (!bounce::writeJsonFile(
+          jsonPath, bounce::benchJson(device.name(), scene, technique, frames - 1, c, columns), &error)) {
+    bounce::app::printError("bounce-render-bench", error);
+    return 2;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -151,6 +247,12 @@ int main(int argc, char** argv) {
   bool perLevel = false;
   app.add_flag("--per-level", perLevel, "One row per NAME.L<n> pass instead of one NAME.L* sum per family");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
+  std::string jsonPath;
+  app.add_option("--json", jsonPath,
+                 "Write the ceilings and, per size and variant, each pass's ms, work, ceiling and fraction");
+  bool noCeilings = false;
+  app.add_flag("--no-ceilings", noCeilings,
+               "Skip the device-ceiling microbenchmarks (work and rates are still reported)");
   bool keepGoing = false;
   bounce::app::addKeepGoing(app, keepGoing);
   if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-render-bench")) return *status;
@@ -166,6 +268,12 @@ int main(int argc, char** argv) {
     variants.push_back(std::move(*v));
   }
   if (variants.empty()) variants.push_back({});
+  // A path that cannot be written fails now, not after minutes of measuring.
+  if (std::string error;
+      !jsonPath.empty() && !bounce::writeJsonFile(jsonPath, nlohmann::json::object(), &error)) {
+    bounce::app::printError("bounce-render-bench", error);
+    return 2;
+  }
 
   bounce::EngineOptions options;
   options.userIni = std::filesystem::path();  // reproducible: no per-user settings
@@ -191,6 +299,17 @@ int main(int argc, char** argv) {
     return 1;
   }
   bounce::Renderer renderer(engine, *device);
+  warnIfMachineIsBusy(*device);
+  std::optional<bounce::DeviceCeilings> ceilings;
+  if (!noCeilings) {
+    try {
+      ceilings = bounce::measureDeviceCeilings(*device, renderer.pipelines());
+    } catch (const std::exception& e) {
+      bounce::app::printError("bounce-render-bench", fmt::format("device ceilings: {}", e.what()));
+      return 2;
+    }
+    fmt::print(stderr, "bounce-render-bench: device ceilings measured in {:.2f} s\n", ceilings->seconds);
+  }
   const bounce::Camera camera =
       engine.scene()->cameras().empty() ? bounce::Camera{} : engine.scene()->cameras()[0];
 
@@ -215,9 +334,26 @@ int main(int argc, char** argv) {
         }
         if (f > 0) stats.addFrame(frame.gpu);
       }
+      // One more frame, untimed, with the shaders' work counters compiled in.
+      renderer.executor().setWorkCounting(true);
+      bounce::RenderedFrame counted = renderer.render(view, {}, frames);
+      renderer.executor().setWorkCounting(false);
+      if (!counted.gpu.ok()) {
+        bounce::app::printError("bounce-render-bench", counted.gpu.errors.front());
+        return 2;
+      }
       Measurement& m = results[{v, size}];
       mergeOrder(passes, stats.passes());
-      for (const std::string& p : stats.passes()) m.passMs[p] = stats.passMedian(p);
+      for (const std::string& p : stats.passes()) {
+        m.passMs[p] = stats.passMedian(p);
+        m.work[p] = stats.passRecordedWork(p);
+      }
+      for (const bounce::gpu::PassTiming& t : counted.gpu.passes)
+        for (size_t u = 0; u < bounce::kWorkUnitCount; ++u)
+          if (t.work.counted[u] && m.passMs.count(t.name)) {
+            m.work[t.name][u] += double(t.work.counted[u]);
+            m.gpuCounted[t.name][u] = true;
+          }
       m.frameMs = stats.frameMedian();
       for (const auto& r : renderer.executor().memory().resources)
         m.persistentBytes += r.persistent ? r.bytes : 0;
@@ -228,7 +364,7 @@ int main(int argc, char** argv) {
   }
   const std::vector<std::string> rows = perLevel ? passes : groupedRows(passes);
   if (!perLevel)
-    for (auto& [key, m] : results) addLevelSums(m.passMs);
+    for (auto& [key, m] : results) addLevelSums(m);
 
   fmt::print("{}, scene {}, GI {}: GPU ms per pass, median of {} frames\n\n", device->name(), scenePath,
              engine.technique(), frames - 1);
@@ -260,7 +396,8 @@ int main(int argc, char** argv) {
       cells.push_back(&results[{0, s}]);
     }
     printTable(columns, cells, rows, /*variants=*/false);
-    return 0;
+    return reportWork(results, sizes, variants, rows, ceilings, *device, scenePath, engine.technique(),
+                      frames, jsonPath);
   }
   for (size_t v = 0; v < variants.size(); ++v)
     fmt::print("- {}: {}\n", variants[v].label, variants[v].describe());
@@ -274,5 +411,6 @@ int main(int argc, char** argv) {
     }
     printTable(columns, cells, rows, /*variants=*/true);
   }
-  return 0;
+  return reportWork(results, sizes, variants, rows, ceilings, *device, scenePath, engine.technique(), frames,
+                    jsonPath);
 }

@@ -1,13 +1,16 @@
 #include "gpu/graph_executor.h"
 
 #include "bounce/core/log.h"
+#include "bounce/gpu/barriers.h"
 #include "bounce/gpu/pass_context.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace bounce::gpu {
@@ -37,6 +40,9 @@ struct PooledBuffer {
 // Pool entries unused for this many frames are freed (a resize leaves the old ones).
 constexpr uint64_t kPoolKeepFrames = 4;
 
+// One pass's counters: a low and a high word per unit (bounce/work_counters.glsl).
+constexpr VkDeviceSize kCounterSlotBytes = 2 * kWorkUnitCount * sizeof(uint32_t);
+
 }  // namespace
 
 struct GraphExecutor::State {
@@ -56,6 +62,11 @@ struct GraphExecutor::State {
   std::vector<std::weak_ptr<PersistentStorage>> persistent;
   // Staging memory of this frame's uploads, kept until the GPU finished the frame.
   std::vector<std::unique_ptr<Buffer>> staging;
+  // Work counting: one slot per executed pass, host-visible so the sums are read
+  // directly after the frame.
+  bool countWork = false;
+  std::unique_ptr<Buffer> counters;
+  VkDeviceSize counterStride = 0;
 
   State(const Device& d, PipelineCache& p) : device(d), pipelines(p) {
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -121,6 +132,29 @@ struct GraphExecutor::State {
     return buffers.back().buffer.get();
   }
 
+  /// A zeroed counter buffer with `slots` slots (each aligned for a storage-buffer
+  /// descriptor offset).
+  void prepareCounters(uint32_t slots) {
+    const VkDeviceSize align =
+        std::max<VkDeviceSize>(16, device.properties().limits.minStorageBufferOffsetAlignment);
+    counterStride = (kCounterSlotBytes + align - 1) / align * align;
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(1, slots) * counterStride;
+    if (!counters || counters->size() < bytes)
+      counters = std::make_unique<Buffer>(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                          MemoryUsage::Readback, "work counters");
+    std::memset(counters->mapped(), 0, bytes);
+  }
+
+  /// The 64-bit sums of one slot (each a low and a high 32-bit word).
+  std::array<uint64_t, kWorkUnitCount> readCounters(uint32_t slot) const {
+    std::array<uint32_t, 2 * kWorkUnitCount> words{};
+    std::memcpy(words.data(), static_cast<const uint8_t*>(counters->mapped()) + slot * counterStride,
+                sizeof(words));
+    std::array<uint64_t, kWorkUnitCount> sums{};
+    for (size_t u = 0; u < kWorkUnitCount; ++u) sums[u] = uint64_t(words[2 * u + 1]) << 32 | words[2 * u];
+    return sums;
+  }
+
   void trimPools() {
     std::erase_if(images, [&](const PooledImage& p) { return frame - p.lastFrame > kPoolKeepFrames; });
     std::erase_if(buffers, [&](const PooledBuffer& p) { return frame - p.lastFrame > kPoolKeepFrames; });
@@ -147,7 +181,8 @@ class ExecutorPassContext final : public PassContext {
                       const std::vector<Buffer*>& buffers, const std::vector<VkImageLayout>& layouts,
                       const std::vector<bool>& declared, const std::vector<bool>& unavailable,
                       const Image& black, const std::string& pass,
-                      std::vector<std::unique_ptr<Buffer>>& staging)
+                      std::vector<std::unique_ptr<Buffer>>& staging,
+                      std::optional<WorkCounterSlot> counterSlot)
       : device_(device),
         pipelines_(pipelines),
         frame_(frame),
@@ -160,7 +195,8 @@ class ExecutorPassContext final : public PassContext {
         unavailable_(unavailable),
         black_(black),
         pass_(pass),
-        staging_(staging) {}
+        staging_(staging),
+        counterSlot_(counterSlot) {}
 
   void upload(BufferHandle dst, const void* data, uint64_t bytes, uint64_t offset) const override {
     if (bytes == 0) return;
@@ -225,6 +261,10 @@ class ExecutorPassContext final : public PassContext {
            buffers_[h.resource];
   }
   bool renderingActive() const { return renderingActive_; }
+  bool countingWork() const override { return counterSlot_.has_value(); }
+
+ protected:
+  std::optional<WorkCounterSlot> workCounterSlot() const override { return counterSlot_; }
 
  private:
   const Device& device_;
@@ -240,6 +280,7 @@ class ExecutorPassContext final : public PassContext {
   const Image& black_;
   const std::string& pass_;
   std::vector<std::unique_ptr<Buffer>>& staging_;
+  std::optional<WorkCounterSlot> counterSlot_;
 
   const Buffer& stage(const void* data, uint64_t bytes) const {
     staging_.push_back(
@@ -340,6 +381,7 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
 
   const uint32_t executed = uint32_t(compiled.executedCount());
   s.ensureQueries(executed * 2);
+  if (s.countWork) s.prepareCounters(executed);
   check(vkResetCommandBuffer(s.cmd, 0), "vkResetCommandBuffer");
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -348,7 +390,7 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
 
   std::vector<bool> declared(nRes), unavailable(nRes);
   uint32_t query = 0;
-  std::vector<std::string> timedPasses;
+  std::vector<std::pair<std::string, PassWork>> timedPasses;
   for (const CompiledPass& cp : compiled.passes) {
     if (!cp.executed) continue;
     vkCmdWriteTimestamp2(s.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, s.queries, query++);
@@ -395,9 +437,14 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
     std::fill(unavailable.begin(), unavailable.end(), false);
     for (const auto& use : pass.uses) declared[use.resource] = true;
     for (uint32_t r : cp.unavailableOptionalReads) unavailable[r] = true;
+    PassWork work;
     if (pass.record) {
+      std::optional<PassContext::WorkCounterSlot> slot;
+      if (s.countWork)
+        slot = PassContext::WorkCounterSlot{s.counters->handle(), timedPasses.size() * s.counterStride,
+                                            kCounterSlotBytes};
       ExecutorPassContext ctx(s.device, s.pipelines, frame, scene, s.cmd, images, buffers, layouts, declared,
-                              unavailable, s.black, cp.name, s.staging);
+                              unavailable, s.black, cp.name, s.staging, slot);
       try {
         pass.record(ctx);
       } catch (const std::exception& e) {
@@ -405,10 +452,14 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
         result.errors.push_back(fmt::format("pass '{}' failed: {}", cp.name, e.what()));
         log::error("{}", result.errors.back());
       }
+      work = ctx.work();
     }
     vkCmdWriteTimestamp2(s.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, s.queries, query++);
-    timedPasses.push_back(cp.name);
+    timedPasses.emplace_back(cp.name, work);
   }
+  if (s.countWork)  // the counters' atomics, visible to the host that reads them after the fence
+    memoryBarrier(s.cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   check(vkEndCommandBuffer(s.cmd), "vkEndCommandBuffer");
 
   VkCommandBufferSubmitInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
@@ -430,7 +481,12 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
     const double msPerTick = s.device.timestampPeriod() * 1e-6;
     for (size_t p = 0; p < timedPasses.size(); ++p) {
       const uint64_t a = ticks[2 * p], b = ticks[2 * p + 1];
-      result.passes.push_back({timedPasses[p], b > a ? double(b - a) * msPerTick : 0.0});
+      PassWork& work = timedPasses[p].second;
+      if (s.countWork) {
+        work.counted = s.readCounters(uint32_t(p));
+        work.countersRead = true;
+      }
+      result.passes.push_back({timedPasses[p].first, b > a ? double(b - a) * msPerTick : 0.0, work});
     }
     result.frameMilliseconds =
         ticks.back() > ticks.front() ? double(ticks.back() - ticks.front()) * msPerTick : 0.0;
@@ -451,6 +507,12 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
 }
 
 MemoryReport GraphExecutor::memory() const { return state_->lastMemory; }
+
+void GraphExecutor::setWorkCounting(bool on) {
+  state_->countWork = on;
+  state_->pipelines.setWorkCounting(on);
+}
+bool GraphExecutor::workCounting() const { return state_->countWork; }
 
 FrameResult runFrame(GraphExecutor& executor, const RenderGraph& graph, const FrameContext& frame,
                      const GpuScene& scene, CompiledGraph* compiledOut) {

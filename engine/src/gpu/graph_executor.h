@@ -7,6 +7,7 @@
 #include "bounce/frame/frame_context.h"
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/gpu_scene.h"
+#include "bounce/gpu/pass_work.h"
 #include "bounce/gpu/pipeline.h"
 #include "bounce/graph/compiled_graph.h"
 
@@ -19,6 +20,7 @@ namespace bounce::gpu {
 struct PassTiming {
   std::string name;
   double milliseconds = 0.0;
+  PassWork work;  ///< what the pass reported while recording, and its shaders' counts when counting
 };
 
 struct FrameResult {
@@ -52,6 +54,13 @@ class GraphExecutor {
                       const GpuScene& scene);
 
   MemoryReport memory() const;
+
+  /// Counts the work shaders report with countWork (bounce/work_counters.glsl) in the
+  /// frames executed while on: pipelines compile with BOUNCE_COUNT_WORK, each pass gets a
+  /// counter slot, and PassTiming::work.counted holds the sums. Atomics cost time, so
+  /// benchmarks count in frames they do not time.
+  void setWorkCounting(bool on);
+  bool workCounting() const;
 
  private:
   struct State;

@@ -3,8 +3,14 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <string_view>
 
 namespace bounce {
+
+namespace {
+// The counter buffer name in bounce/work_counters.glsl.
+constexpr std::string_view kWorkCountersBinding = "bounceWorkCounters";
+}  // namespace
 
 gpu::DescriptorWrites PassContext::resolve(const gpu::Pipeline& pipeline,
                                            const gpu::Bindings& bindings) const {
@@ -43,6 +49,16 @@ gpu::DescriptorWrites PassContext::resolve(const gpu::Pipeline& pipeline,
         break;
       }
     }
+  }
+  // Shaders compiled for counting declare the counter buffer; each pass adds to its own
+  // slot, so the executor can tell passes apart without any help from them.
+  if (pipeline.binding(kWorkCountersBinding)) {
+    const std::optional<WorkCounterSlot> slot = workCounterSlot();
+    if (!slot)
+      throw std::logic_error(
+          "pipeline " + pipeline.name() +
+          " counts work, but this frame does not (it was compiled with BOUNCE_COUNT_WORK)");
+    writes.buffer(kWorkCountersBinding, slot->buffer, slot->offset, slot->range);
   }
   return writes;
 }

@@ -238,7 +238,17 @@ std::unique_ptr<Pipeline> PipelineCache::build(const Entry& e) const {
   return std::make_unique<Pipeline>(device_, std::move(shaders), &g, name);
 }
 
-const Pipeline& PipelineCache::compute(const ShaderSource& source) {
+namespace {
+
+ShaderSource withWorkCounting(ShaderSource source, bool on) {
+  if (on) source.defines.emplace_back("BOUNCE_COUNT_WORK", "1");
+  return source;
+}
+
+}  // namespace
+
+const Pipeline& PipelineCache::compute(const ShaderSource& requested) {
+  const ShaderSource source = withWorkCounting(requested, workCounting_);
   for (const auto& e : entries_)
     if (e->compute && *e->compute == source) return *e->pipeline;
   auto entry = std::make_unique<Entry>();
@@ -249,7 +259,11 @@ const Pipeline& PipelineCache::compute(const ShaderSource& source) {
   return *entries_.back()->pipeline;
 }
 
-const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& desc) {
+const Pipeline& PipelineCache::graphics(const GraphicsPipelineDesc& requested) {
+  GraphicsPipelineDesc desc = requested;
+  desc.vertex = withWorkCounting(desc.vertex, workCounting_);
+  if (desc.geometry) desc.geometry = withWorkCounting(*desc.geometry, workCounting_);
+  if (desc.fragment) desc.fragment = withWorkCounting(*desc.fragment, workCounting_);
   for (const auto& e : entries_)
     if (e->graphics && *e->graphics == desc) return *e->pipeline;
   auto entry = std::make_unique<Entry>();

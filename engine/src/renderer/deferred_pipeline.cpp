@@ -25,6 +25,7 @@ struct LightingPush {
   uint32_t lightCount;
   uint32_t flags;
   uint32_t width, height;
+  uint32_t coveredPixelBytes;  ///< image bytes a covered pixel reads beyond its depth (work counting)
 };
 static_assert(sizeof(LightingPush) <= 128);
 
@@ -154,6 +155,8 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
         ctx.drawScene(pipeline, common, {}, &m, sizeof(m));
         ctx.endRendering();
       }
+      // Each layer's depth cleared and stored once (overdraw's depth tests not counted).
+      ctx.addWork(WorkUnit::ImageBytes, uint64_t(mapSize) * mapSize * layers * sizeof(float));
     };
   });
 }
@@ -201,6 +204,13 @@ void DeferredPipeline::geometry(RenderGraph& g, const FrameContext& frame) const
           doubleSided, common, [](const gpu::GpuDraw& d) { return d.doubleSided; }, &viewProjection,
           sizeof(viewProjection));
       ctx.endRendering();
+      // Every target is stored once per pixel; overdraw's depth tests and rewrites, and
+      // the vertex and material reads, are not counted (a lower bound).
+      uint64_t bytesPerPixel = 0;
+      for (TextureHandle t : {base, normal, material, emissive, depth})
+        bytesPerPixel += formatBytesPerTexel(ctx.image(t).format());
+      const VkExtent3D e = ctx.image(depth).extent();
+      ctx.addWork(WorkUnit::ImageBytes, uint64_t(e.width) * e.height * bytesPerPixel);
     };
   });
 }
@@ -239,6 +249,16 @@ void DeferredPipeline::lighting(RenderGraph& g, const FrameContext& frame) const
       // tell the shader which ones to use.
       push.flags = (ctx.available(diffuse) ? 1u : 0u) | (ctx.available(specular) ? 2u : 0u) |
                    (ctx.available(ao) ? 4u : 0u) | (ctx.available(shadows) ? 8u : 0u);
+      // Every pixel reads its depth and writes both outputs; a covered one also reads the
+      // rest of the G-buffer and the GI channels present, which the shader counts (with
+      // its shadow-map taps) when the frame counts work.
+      const uint64_t pixels = uint64_t(push.width) * push.height;
+      ctx.addWork(WorkUnit::ImageBytes, pixels * (formatBytesPerTexel(ctx.image(depth).format()) +
+                                                  formatBytesPerTexel(ctx.image(radiance).format()) +
+                                                  formatBytesPerTexel(ctx.image(direct).format())));
+      push.coveredPixelBytes = 0;
+      for (TextureHandle t : {base, normal, material, emissive, diffuse, specular, ao})
+        if (ctx.available(t)) push.coveredPixelBytes += formatBytesPerTexel(ctx.image(t).format());
       const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("lighting.comp"));
       gpu::Bindings bind;
       bind.texture("gBaseColor", base, gpu::SamplerKind::NearestClamp)
@@ -284,11 +304,17 @@ void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) co
     return [=](PassContext& ctx) {
       const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("bloom.comp"));
       const gpu::Image& img = ctx.image(out);
+      const uint64_t texelBytes = formatBytesPerTexel(img.format());
       auto step = [&](uint32_t mode, uint32_t mip, gpu::Bindings bind) {
         VkExtent3D e = img.extent(mip);
         BloomPush p{e.width, e.height, mode, threshold, exposure};
         bind.storage("target", out, mip);
         ctx.dispatchThreads(pipeline, bind, {e.width, e.height, 1}, p);
+        // Per pixel: 13 bilinear taps down (mode 0, 1), or 9 up plus a load of the
+        // target (mode 2); one RGBA16F store.
+        const uint64_t pixels = uint64_t(e.width) * e.height;
+        ctx.addWork(WorkUnit::TextureSamples, pixels * (mode == 2 ? 9 : 13));
+        ctx.addWork(WorkUnit::ImageBytes, pixels * texelBytes * (mode == 2 ? 2 : 1));
         // The next step samples what this one wrote.
         gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -317,6 +343,11 @@ void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) co
       gpu::Bindings bind;
       bind.texture("hdr", hdr, gpu::SamplerKind::NearestClamp).texture("bloom", bloomIn).storage("ldr", ldr);
       ctx.dispatchThreads(ctx.pipelines().compute(shader("tonemap.comp")), bind, {width, height, 1}, p);
+      // Per pixel: one HDR texel read, one bilinear bloom tap, one LDR texel written.
+      const uint64_t pixels = uint64_t(width) * height;
+      ctx.addWork(WorkUnit::ImageBytes, pixels * (formatBytesPerTexel(ctx.image(hdr).format()) +
+                                                  formatBytesPerTexel(ctx.image(ldr).format())));
+      if (hasBloom) ctx.addWork(WorkUnit::TextureSamples, pixels);
     };
   });
 }

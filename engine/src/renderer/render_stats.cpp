@@ -23,6 +23,18 @@ double RenderStats::passMedian(const std::string& pass) const {
   return it == passMs_.end() ? 0.0 : median(it->second);
 }
 
+std::array<double, kWorkUnitCount> RenderStats::passRecordedWork(const std::string& pass) const {
+  std::array<double, kWorkUnitCount> medians{};
+  auto it = passWork_.find(pass);
+  if (it == passWork_.end()) return medians;
+  for (size_t u = 0; u < kWorkUnitCount; ++u) {
+    std::vector<double> values;
+    for (const PassWork& w : it->second) values.push_back(double(w.recorded[u]));
+    medians[u] = median(std::move(values));
+  }
+  return medians;
+}
+
 void RenderStats::addFrame(const gpu::FrameResult& frame, const std::vector<Engine::HookTiming>& cpu) {
   double total = 0.0;
   for (const Engine::HookTiming& h : cpu) {
@@ -34,6 +46,7 @@ void RenderStats::addFrame(const gpu::FrameResult& frame, const std::vector<Engi
   for (const gpu::PassTiming& p : frame.passes) {
     if (!passMs_.count(p.name)) order_.push_back(p.name);
     passMs_[p.name].push_back(p.milliseconds);
+    passWork_[p.name].push_back(p.work);
   }
   frameMs_.push_back(frame.frameMilliseconds);
 }
@@ -76,8 +89,13 @@ bool RenderStats::writeJson(const std::string& path, std::string* error) const {
     std::string reason;
     for (const auto& [name, why] : runReasons_)
       if (name == n) reason = why;
-    j["passes"].push_back(
-        {{"name", n}, {"medianMs", median(passMs_.at(n))}, {"samplesMs", passMs_.at(n)}, {"reason", reason}});
+    nlohmann::json pass = {
+        {"name", n}, {"medianMs", median(passMs_.at(n))}, {"samplesMs", passMs_.at(n)}, {"reason", reason}};
+    // What the pass reported doing while recording (median per unit), where it did.
+    const std::array<double, kWorkUnitCount> work = passRecordedWork(n);
+    for (size_t u = 0; u < kWorkUnitCount; ++u)
+      if (work[u] > 0.0) pass["work"][std::string(workUnitName(WorkUnit(u)))] = work[u];
+    j["passes"].push_back(std::move(pass));
   }
   j["cpuMs"] = median(cpuMs_);
   j["cpuHooks"] = nlohmann::json::array();

@@ -6,6 +6,7 @@
 #include "bounce/graph/compiled_graph.h"
 #include "gpu/graph_executor.h"
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -22,6 +23,9 @@ class RenderStats {
   /// Passes in execution order, and their medians.
   const std::vector<std::string>& passes() const { return order_; }
   double passMedian(const std::string& pass) const;
+  /// The median of each unit of the work the pass reported while recording, over the
+  /// frames that ran it (zeros for a pass that reported none).
+  std::array<double, kWorkUnitCount> passRecordedWork(const std::string& pass) const;
   double frameMedian() const { return median(frameMs_); }
   /// Median CPU milliseconds of the pass hooks' setup per frame, in total.
   double cpuMedian() const { return median(cpuMs_); }
@@ -34,6 +38,7 @@ class RenderStats {
   uint32_t width_, height_;
   std::vector<std::string> order_;  // passes in execution order
   std::map<std::string, std::vector<double>> passMs_;
+  std::map<std::string, std::vector<PassWork>> passWork_;
   std::vector<double> frameMs_;
   std::vector<double> cpuMs_;  // all hooks, per frame
   std::vector<std::string> cpuOrder_;

@@ -116,6 +116,11 @@ class AmbientPlugin final : public Plugin {
             [&](const gpu::GpuDraw& d) { return d.material < receives.size() && receives[d.material]; },
             &push, sizeof(push));
         ctx.endRendering();
+        // The target is cleared and stored once per pixel; which fragments pass the depth
+        // test depends on the scene, so the fragment shader counts those (when counting).
+        const gpu::Image& target = ctx.image(out);
+        ctx.addWork(WorkUnit::ImageBytes, uint64_t(target.extent().width) * target.extent().height *
+                                              formatBytesPerTexel(target.format()));
       };
     });
   }

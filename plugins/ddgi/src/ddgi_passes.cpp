@@ -144,6 +144,9 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
       bindRayTracingScene(bind, rt);
       ctx.dispatchThreads(ctx.pipelines().compute(shader("trace.comp")), bind,
                           {uint32_t(std::max<uint64_t>(rayCount, 1)), 1, 1});
+      // The probe rays dispatched (bounce-render-bench reports the rate); the shadow rays
+      // at their hits, one per light, are not counted.
+      ctx.addWork(WorkUnit::Rays, rayCount);
     };
   });
 

@@ -6,6 +6,7 @@
 #include "bounce/frame/frame_context.h"
 #include "bounce/gpu/bindings.h"
 #include "bounce/gpu/gpu_scene.h"
+#include "bounce/gpu/pass_work.h"
 #include "bounce/gpu/pipeline.h"
 #include "bounce/graph/resource.h"
 
@@ -93,10 +94,32 @@ class PassContext {
                      const void* extraPush = nullptr, uint32_t extraPushBytes = 0,
                      float maxWorldError = 0.0f) const;
 
-  /// The resolved descriptor writes for `bindings` (for custom binding code).
+  /// The resolved descriptor writes for `bindings` (for custom binding code). A pipeline
+  /// compiled with work counters (its shader declares `bounceWorkCounters`) gets this
+  /// pass's counter slot bound here, so passes never name it.
   gpu::DescriptorWrites resolve(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings) const;
 
+  // --- work (bounce/gpu/pass_work.h) --------------------------------------------------
+  /// Reports work this pass's commands do, counted from what it records (texels × bytes
+  /// per texel, pixels × samples per pixel). Adds up over calls; a benchmark divides it by
+  /// the pass's GPU time.
+  void addWork(WorkUnit unit, uint64_t amount) const { work_.recorded[size_t(unit)] += amount; }
+  const PassWork& work() const { return work_; }
+  /// Whether this frame's pipelines are compiled with BOUNCE_COUNT_WORK, so shaders'
+  /// countWork calls count (for passes that prepare data only counting needs).
+  virtual bool countingWork() const { return false; }
+
+  /// The buffer range this pass's shader counters add to, when the frame counts work.
+  struct WorkCounterSlot {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceSize offset = 0, range = 0;
+  };
+
  protected:
+  virtual std::optional<WorkCounterSlot> workCounterSlot() const { return std::nullopt; }
+
+  mutable PassWork work_;
+
   /// Set between beginRendering and endRendering, so the executor can close a render
   /// pass that a failing record callback left open.
   mutable bool renderingActive_ = false;

@@ -88,6 +88,12 @@ class PipelineCache {
   const Pipeline& compute(const ShaderSource& source);
   const Pipeline& graphics(const GraphicsPipelineDesc& desc);
 
+  /// While on, every shader is compiled with `#define BOUNCE_COUNT_WORK 1`, so the
+  /// countWork calls of bounce/work_counters.glsl count (a separate pipeline: switching
+  /// back costs nothing and ordinary frames keep their counter-free code).
+  void setWorkCounting(bool on) { workCounting_ = on; }
+  bool workCounting() const { return workCounting_; }
+
   /// Re-creates pipelines whose source files changed on disk. A pipeline whose new
   /// source fails to compile keeps working with its last good version; the errors are
   /// returned (one per failed pipeline, "file:line: message").
@@ -101,6 +107,7 @@ class PipelineCache {
   const Device& device_;
   ShaderCompiler& compiler_;
   std::vector<std::unique_ptr<Entry>> entries_;
+  bool workCounting_ = false;
 };
 
 /// Descriptor writes for one pipeline's push-descriptor set, by binding name.

@@ -6,6 +6,8 @@
 #include "bounce/brdf.glsl"
 #include "bounce/gbuffer.glsl"
 #include "bounce/lights.glsl"
+#define WORK_COUNTERS_BINDING 13
+#include "bounce/work_counters.glsl"  // before shadows.glsl: its taps count themselves
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -34,6 +36,7 @@ layout(push_constant) uniform Push {
   uint lightCount;
   uint flags;
   uvec2 size;
+  uint coveredPixelBytes;  // G-buffer and GI texels a covered pixel reads beyond its depth
 } pc;
 
 void main() {
@@ -46,6 +49,7 @@ void main() {
     imageStore(outDirect, ivec2(p), vec4(0.0, 0.0, 0.0, 1.0));
     return;
   }
+  countWork(WORK_IMAGE_BYTES, pc.coveredPixelBytes);
   vec3 P = worldPositionFromDepth(uv, depth, pc.inverseViewProjection);
   vec4 nr = texelFetch(gNormalRoughness, ivec2(p), 0);
   vec4 mat = texelFetch(gMaterial, ivec2(p), 0);

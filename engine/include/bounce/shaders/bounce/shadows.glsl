@@ -36,6 +36,9 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   vec2 uv = ndc.xy * 0.5 + 0.5;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
   // 3×3 taps of hardware 2×2 PCF: a soft, stable edge at one texel's cost per tap.
+#ifdef BOUNCE_WORK_COUNTERS_GLSL
+  countWork(WORK_TEXTURE_SAMPLES, 9u);  // a shader that counts its work counts these taps too
+#endif
   vec2 texel = 1.0 / vec2(textureSize(maps, 0).xy);
   float lit = 0.0;
   for (int y = -1; y <= 1; ++y)

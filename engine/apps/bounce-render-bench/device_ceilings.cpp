@@ -1,0 +1,204 @@
+#include "bounce-render-bench/device_ceilings.h"
+
+#include "bounce-render-bench/timed_dispatch.h"
+#include "bounce/gpu/barriers.h"
+#include "bounce/gpu/buffer.h"
+#include "bounce/gpu/image.h"
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace bounce {
+
+namespace {
+
+constexpr const char* kShaders = "engine/apps/bounce-render-bench/shaders/";
+
+gpu::ShaderSource shader(const char* name) { return {std::string(kShaders) + name, {}}; }
+
+uint32_t groups(uint64_t threads, uint32_t local) { return uint32_t((threads + local - 1) / local); }
+
+template <class T>
+void push(VkCommandBuffer cmd, const gpu::Pipeline& p, const T& value) {
+  vkCmdPushConstants(cmd, p.layout(), p.stages(), 0, sizeof(T), &value);
+}
+
+double fmaFlopsPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines, const TimedDispatch& timer,
+                         int runs) {
+  constexpr uint32_t kInvocations = 1u << 17, kTrips = 64;
+  constexpr double kFlopsPerInvocation = kTrips * 8.0 * 4 * 4 * 2;  // trips × unroll × vec4s × lanes × 2
+  gpu::Buffer result(device, kInvocations * 16ull, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                     gpu::MemoryUsage::DeviceLocal, "ceiling.fma");
+  const gpu::Pipeline& p = pipelines.compute(shader("ceiling_fma.comp"));
+  struct {
+    float m, c;
+    uint32_t trips;
+  } constants{0.999f, 0.001f, kTrips};
+  const double s = timer.medianSeconds(
+      [&](VkCommandBuffer cmd) {
+        vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
+        gpu::DescriptorWrites(p).buffer("Result", result.handle()).push(device, cmd);
+        push(cmd, p, constants);
+        vkCmdDispatch(cmd, groups(kInvocations, p.localSize()[0]), 1, 1);
+      },
+      runs);
+  return kInvocations * kFlopsPerInvocation / s;
+}
+
+double bufferBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines,
+                            const TimedDispatch& timer, int runs) {
+  constexpr uint64_t kBytes = 64ull << 20;  // per buffer; under maxStorageBufferRange (128 MiB)
+  const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  gpu::Buffer source(device, kBytes, usage, gpu::MemoryUsage::DeviceLocal, "ceiling.source");
+  gpu::Buffer destination(device, kBytes, usage, gpu::MemoryUsage::DeviceLocal, "ceiling.destination");
+  device.submitAndWait([&](VkCommandBuffer cmd) {  // touch every page before timing
+    vkCmdFillBuffer(cmd, source.handle(), 0, VK_WHOLE_SIZE, 0x3f800000u);
+    vkCmdFillBuffer(cmd, destination.handle(), 0, VK_WHOLE_SIZE, 0);
+  });
+  const gpu::Pipeline& p = pipelines.compute(shader("ceiling_buffer_copy.comp"));
+  const uint32_t count = uint32_t(kBytes / 16);
+  const double s = timer.medianSeconds(
+      [&](VkCommandBuffer cmd) {
+        gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
+        gpu::DescriptorWrites(p)
+            .buffer("Source", source.handle())
+            .buffer("Destination", destination.handle())
+            .push(device, cmd);
+        push(cmd, p, count);
+        vkCmdDispatch(cmd, groups(count, p.localSize()[0]), 1, 1);
+      },
+      runs);
+  return 2.0 * double(kBytes) / s;
+}
+
+/// A 3D RGBA16F volume of `size`³ with a smooth pattern (so filtering does real work).
+gpu::Image makeVolume(const gpu::Device& device, uint32_t size, VkImageUsageFlags usage, const char* name) {
+  return gpu::Image(device,
+                    TextureDesc{.type = TextureType::Tex3D,
+                                .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                .width = size,
+                                .height = size,
+                                .depth = size},
+                    usage, name);
+}
+
+std::vector<uint16_t> halfPattern(uint32_t size) {
+  std::vector<uint16_t> texels(size_t(size) * size * size * 4);
+  // Half-float bit patterns of values in [0.5, 1): exponent 0x3800, varying mantissa.
+  for (size_t i = 0; i < texels.size(); ++i)
+    texels[i] = uint16_t(0x3800u | ((i * 2654435761u >> 8) & 0x3ffu));
+  return texels;
+}
+
+double imageBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines,
+                           const TimedDispatch& timer, int runs) {
+  constexpr uint32_t kSize = 128;
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  gpu::Image source = makeVolume(device, kSize, usage, "ceiling.imageSource");
+  gpu::Image destination = makeVolume(device, kSize, usage, "ceiling.imageDestination");
+  const std::vector<uint16_t> texels = halfPattern(kSize);
+  gpu::uploadImage(device, source, texels.data(), texels.size() * 2, VK_IMAGE_LAYOUT_GENERAL);
+  gpu::uploadImage(device, destination, texels.data(), texels.size() * 2, VK_IMAGE_LAYOUT_GENERAL);
+  const gpu::Pipeline& p = pipelines.compute(shader("ceiling_image_copy.comp"));
+  const auto local = p.localSize();
+  const double s = timer.medianSeconds(
+      [&](VkCommandBuffer cmd) {
+        gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
+        gpu::DescriptorWrites(p)
+            .storageImage("source", source.view())
+            .storageImage("destination", destination.view())
+            .push(device, cmd);
+        vkCmdDispatch(cmd, groups(kSize, local[0]), groups(kSize, local[1]), groups(kSize, local[2]));
+      },
+      runs);
+  return 2.0 * double(kSize) * kSize * kSize * 8.0 / s;
+}
+
+double trilinearSamplesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines,
+                                 const TimedDispatch& timer, int runs) {
+  constexpr uint32_t kSize = 128, kSteps = 64;
+  constexpr uint32_t kGrid[3] = {64, 64, 16};
+  gpu::Image volume = makeVolume(device, kSize, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                 "ceiling.volume");
+  const std::vector<uint16_t> texels = halfPattern(kSize);
+  gpu::uploadImage(device, volume, texels.data(), texels.size() * 2,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  const uint64_t invocations = uint64_t(kGrid[0]) * kGrid[1] * kGrid[2];
+  gpu::Buffer result(device, invocations * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                     gpu::MemoryUsage::DeviceLocal, "ceiling.trilinear");
+  const gpu::Pipeline& p = pipelines.compute(shader("ceiling_trilinear.comp"));
+  const auto local = p.localSize();
+  struct {
+    uint32_t grid[3];
+    uint32_t steps;
+  } constants{{kGrid[0], kGrid[1], kGrid[2]}, kSteps};
+  const double s = timer.medianSeconds(
+      [&](VkCommandBuffer cmd) {
+        vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
+        gpu::DescriptorWrites(p)
+            .sampled("volume", volume.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                     device.sampler(gpu::SamplerKind::LinearClamp))
+            .buffer("Result", result.handle())
+            .push(device, cmd);
+        push(cmd, p, constants);
+        vkCmdDispatch(cmd, groups(kGrid[0], local[0]), groups(kGrid[1], local[1]),
+                      groups(kGrid[2], local[2]));
+      },
+      runs);
+  return double(invocations) * kSteps / s;
+}
+
+}  // namespace
+
+std::optional<double> DeviceCeilings::perSecond(WorkUnit unit) const {
+  switch (unit) {
+    case WorkUnit::BufferBytes:
+      return bufferBytesPerSecond;
+    case WorkUnit::ImageBytes:
+      return imageBytesPerSecond;
+    case WorkUnit::TextureSamples:
+      return textureSamplesPerSecond;
+    case WorkUnit::Flops:
+      return flopsPerSecond;
+    case WorkUnit::Rays:
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+std::string DeviceCeilings::describe(WorkUnit unit) {
+  switch (unit) {
+    case WorkUnit::BufferBytes:
+      return "storage-buffer copy, bytes read + written/s";
+    case WorkUnit::ImageBytes:
+      return "RGBA16F 3D storage-image copy, bytes read + written/s";
+    case WorkUnit::TextureSamples:
+      return "trilinear RGBA16F 3D samples/s, coherent";
+    case WorkUnit::Flops:
+      return "FMA chains, flops/s";
+    case WorkUnit::Rays:
+      return "none (rays/s reported as measured)";
+  }
+  return {};
+}
+
+DeviceCeilings measureDeviceCeilings(const gpu::Device& device, gpu::PipelineCache& pipelines, int runs) {
+  const auto start = std::chrono::steady_clock::now();
+  const TimedDispatch timer(device);
+  DeviceCeilings c;
+  c.flopsPerSecond = fmaFlopsPerSecond(device, pipelines, timer, runs);
+  c.bufferBytesPerSecond = bufferBytesPerSecond(device, pipelines, timer, runs);
+  c.imageBytesPerSecond = imageBytesPerSecond(device, pipelines, timer, runs);
+  c.textureSamplesPerSecond = trilinearSamplesPerSecond(device, pipelines, timer, runs);
+  c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return c;
+}
+
+}  // namespace bounce

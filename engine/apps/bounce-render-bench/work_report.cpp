@@ -1,0 +1,132 @@
+#include "bounce-render-bench/work_report.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace bounce {
+
+namespace {
+
+/// 1234567 → "1.23 M": work spans bytes to gigabytes, so the tables use SI prefixes.
+std::string si(double value) {
+  static constexpr const char* kPrefixes[] = {"", "k", "M", "G", "T", "P"};
+  size_t p = 0;
+  while (std::abs(value) >= 1000.0 && p + 1 < std::size(kPrefixes)) {
+    value /= 1000.0;
+    ++p;
+  }
+  return fmt::format("{:.3g} {}", value, kPrefixes[p]);
+}
+
+std::string jsonKey(WorkUnit unit) {
+  static constexpr const char* kKeys[] = {"bufferBytes", "imageBytes", "textureSamples", "flops", "rays"};
+  return kKeys[size_t(unit)];
+}
+
+}  // namespace
+
+std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* ceilings) {
+  std::vector<WorkRate> rates;
+  for (size_t u = 0; u < kWorkUnitCount; ++u) {
+    if (pass.work[u] <= 0.0) continue;
+    WorkRate r{WorkUnit(u), pass.work[u]};
+    if (pass.milliseconds > 0.0) r.perSecond = pass.work[u] / (pass.milliseconds * 1e-3);
+    if (ceilings) r.ceiling = ceilings->perSecond(r.unit);
+    if (r.ceiling && *r.ceiling > 0.0 && pass.milliseconds > 0.0) r.fraction = r.perSecond / *r.ceiling;
+    rates.push_back(r);
+  }
+  return rates;
+}
+
+std::string ceilingsTable(const DeviceCeilings& c) {
+  std::string out = fmt::format("| {:<54} | {:>14} |\n|{:-<56}|{:->15}:|\n",
+                                "device ceiling (median of runs)", "per second", "", "");
+  for (WorkUnit u : {WorkUnit::TextureSamples, WorkUnit::BufferBytes, WorkUnit::ImageBytes, WorkUnit::Flops})
+    out += fmt::format("| {:<54} | {:>14} |\n", DeviceCeilings::describe(u), si(*c.perSecond(u)));
+  return out;
+}
+
+std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilings) {
+  std::string out = fmt::format("| {:<26} | {:<16} | {:>12} | {:>10} | {:>12} | {:>12} | {:>8} |\n", "pass",
+                                "work", "per frame", "ms", "per second", "ceiling", "fraction");
+  out +=
+      "|----------------------------|------------------|-------------:|-----------:|-------------:|----------"
+      "-"
+      "--:|---------:|\n";
+  std::vector<std::string> silent;
+  for (const MeasuredPass& pass : column.passes) {
+    const std::vector<WorkRate> rates = workRates(pass, ceilings);
+    if (rates.empty()) silent.push_back(pass.name);
+    for (const WorkRate& r : rates)
+      out += fmt::format("| {:<26} | {:<16} | {:>12} | {:>10.3f} | {:>12} | {:>12} | {:>8} |\n", pass.name,
+                         std::string(workUnitName(r.unit)) + (pass.gpuCounted[size_t(r.unit)] ? "*" : ""),
+                         si(r.amount), pass.milliseconds, si(r.perSecond), r.ceiling ? si(*r.ceiling) : "-",
+                         r.fraction ? fmt::format("{:.1f}%", 100.0 * *r.fraction) : "-");
+  }
+  out += "* includes what the pass's shaders counted (bounce/work_counters.glsl) in an untimed frame\n";
+  if (!silent.empty()) {
+    out += "reported no work:";
+    for (const std::string& s : silent) out += " " + s;
+    out += "\n";
+  }
+  return out;
+}
+
+nlohmann::json benchJson(const std::string& device, const std::string& scene, const std::string& technique,
+                         uint32_t timedFrames, const DeviceCeilings* ceilings,
+                         const std::vector<MeasuredColumn>& columns) {
+  nlohmann::json j;
+  j["device"] = device;
+  j["scene"] = scene;
+  j["technique"] = technique;
+  j["timedFrames"] = timedFrames;
+  if (ceilings) {
+    j["ceilings"] = {{"textureSamplesPerSecond", ceilings->textureSamplesPerSecond},
+                     {"bufferBytesPerSecond", ceilings->bufferBytesPerSecond},
+                     {"imageBytesPerSecond", ceilings->imageBytesPerSecond},
+                     {"flopsPerSecond", ceilings->flopsPerSecond},
+                     {"seconds", ceilings->seconds}};
+  } else {
+    j["ceilings"] = nullptr;
+  }
+  j["runs"] = nlohmann::json::array();
+  for (const MeasuredColumn& c : columns) {
+    nlohmann::json run = {{"size", c.size}, {"variant", c.variant}, {"frameMs", c.frameMs}};
+    run["passes"] = nlohmann::json::array();
+    for (const MeasuredPass& p : c.passes) {
+      nlohmann::json pass = {{"name", p.name}, {"ms", p.milliseconds}};
+      pass["work"] = nlohmann::json::object();
+      for (const WorkRate& r : workRates(p, ceilings)) {
+        pass["work"][jsonKey(r.unit)] = {
+            {"perFrame", r.amount},
+            {"perSecond", r.perSecond},
+            {"ceiling", r.ceiling ? nlohmann::json(*r.ceiling) : nlohmann::json(nullptr)},
+            {"fraction", r.fraction ? nlohmann::json(*r.fraction) : nlohmann::json(nullptr)},
+            {"gpuCounted", p.gpuCounted[size_t(r.unit)]}};
+      }
+      run["passes"].push_back(std::move(pass));
+    }
+    j["runs"].push_back(std::move(run));
+  }
+  return j;
+}
+
+bool writeJsonFile(const std::string& path, const nlohmann::json& json, std::string* error) {
+  std::ofstream out(path);
+  if (!out) {
+    if (error) *error = fmt::format("cannot write {}: {}", path, std::strerror(errno));
+    return false;
+  }
+  if (!(out << json.dump(2) << '\n')) {
+    if (error) *error = fmt::format("cannot write {}", path);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace bounce

@@ -1,0 +1,60 @@
+#pragma once
+// bounce-render-bench's comparison of each pass with the device's ceilings: per pass and
+// unit of work, the amount per frame, the rate its GPU time gives and the fraction of the
+// ceiling for that unit; as a text table and as JSON (--json).
+
+#include "bounce-render-bench/device_ceilings.h"
+#include "bounce/gpu/pass_work.h"
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bounce {
+
+struct MeasuredPass {
+  std::string name;
+  double milliseconds = 0.0;                      ///< median GPU time
+  std::array<double, kWorkUnitCount> work{};      ///< per frame: recorded (median) + counted
+  std::array<bool, kWorkUnitCount> gpuCounted{};  ///< the unit includes shader counts
+};
+
+/// One size under one variant.
+struct MeasuredColumn {
+  uint32_t size = 0;
+  std::string variant;  ///< empty: the current settings
+  double frameMs = 0.0;
+  std::vector<MeasuredPass> passes;  ///< in execution order
+};
+
+/// One unit of one pass against its ceiling.
+struct WorkRate {
+  WorkUnit unit;
+  double amount = 0.0;             ///< per frame
+  double perSecond = 0.0;          ///< amount / GPU time (0 when the time is 0)
+  std::optional<double> ceiling;   ///< per second; none for rays or without ceilings
+  std::optional<double> fraction;  ///< perSecond / ceiling
+};
+/// The units `pass` did work in, in WorkUnit order.
+std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* ceilings);
+
+/// "| ceiling | measured |" rows for the four ceilings.
+std::string ceilingsTable(const DeviceCeilings& ceilings);
+/// A row per pass and unit of work: work per frame, ms, rate, ceiling, fraction. Passes
+/// that reported no work are listed at the end by name.
+std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilings);
+
+/// Everything above as one document: device, scene, technique, frames, the ceilings (null
+/// without), and per size/variant the frame time and each pass's ms, work, ceiling and
+/// fraction.
+nlohmann::json benchJson(const std::string& device, const std::string& scene, const std::string& technique,
+                         uint32_t timedFrames, const DeviceCeilings* ceilings,
+                         const std::vector<MeasuredColumn>& columns);
+
+/// Writes `json` to `path`; on failure a one-line reason in `error`.
+bool writeJsonFile(const std::string& path, const nlohmann::json& json, std::string* error);
+
+}  // namespace bounce

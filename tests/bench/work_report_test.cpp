@@ -1,0 +1,91 @@
+// bounce-render-bench's work report: rates and fractions of the ceilings, and the JSON
+// it writes with --json (read back with a JSON parser).
+
+#include "bounce-render-bench/work_report.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace bounce {
+namespace {
+
+DeviceCeilings someCeilings() {
+  DeviceCeilings c;
+  c.textureSamplesPerSecond = 200e6;
+  c.bufferBytesPerSecond = 8e9;
+  c.imageBytesPerSecond = 4e9;
+  c.flopsPerSecond = 80e9;
+  return c;
+}
+
+MeasuredColumn someColumn() {
+  MeasuredColumn c{128, "static", 12.5, {}};
+  MeasuredPass trace{"Trace", 10.0, {}, {}};
+  trace.work[size_t(WorkUnit::TextureSamples)] = 1e6;  // 1e8/s: half the ceiling
+  trace.gpuCounted[size_t(WorkUnit::TextureSamples)] = true;
+  trace.work[size_t(WorkUnit::Rays)] = 5000;
+  c.passes.push_back(trace);
+  c.passes.push_back({"Quiet", 1.0, {}, {}});
+  return c;
+}
+
+TEST(WorkReport, RatesAreWorkOverTimeAgainstTheUnitsCeiling) {
+  const DeviceCeilings ceilings = someCeilings();
+  const std::vector<WorkRate> rates = workRates(someColumn().passes[0], &ceilings);
+  ASSERT_EQ(rates.size(), 2u);
+  EXPECT_EQ(rates[0].unit, WorkUnit::TextureSamples);
+  EXPECT_DOUBLE_EQ(rates[0].perSecond, 1e8);
+  EXPECT_DOUBLE_EQ(*rates[0].fraction, 0.5);
+  EXPECT_EQ(rates[1].unit, WorkUnit::Rays);  // no ceiling: a rate only
+  EXPECT_DOUBLE_EQ(rates[1].perSecond, 5e5);
+  EXPECT_FALSE(rates[1].ceiling);
+  EXPECT_FALSE(rates[1].fraction);
+  EXPECT_TRUE(workRates(someColumn().passes[1], &ceilings).empty());
+  EXPECT_FALSE(workRates(someColumn().passes[0], nullptr)[0].fraction);  // --no-ceilings
+}
+
+TEST(WorkReport, TableNamesEveryPass) {
+  const DeviceCeilings ceilings = someCeilings();
+  const std::string table = workTable(someColumn(), &ceilings);
+  EXPECT_NE(table.find("texture samples*"), std::string::npos) << table;
+  EXPECT_NE(table.find("50.0%"), std::string::npos) << table;
+  EXPECT_NE(table.find("reported no work: Quiet"), std::string::npos) << table;
+}
+
+TEST(WorkReport, JsonIsWrittenAndParses) {
+  const DeviceCeilings ceilings = someCeilings();
+  const auto path = std::filesystem::temp_directory_path() / "bounce_work_report_test.json";
+  std::string error;
+  ASSERT_TRUE(writeJsonFile(
+      path.string(), benchJson("lavapipe", "scene.gltf", "Ambient", 3, &ceilings, {someColumn()}), &error))
+      << error;
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in);  // throws on malformed JSON
+  EXPECT_EQ(j["technique"], "Ambient");
+  EXPECT_DOUBLE_EQ(j["ceilings"]["textureSamplesPerSecond"].get<double>(), 200e6);
+  const nlohmann::json& run = j["runs"][0];
+  EXPECT_EQ(run["size"], 128);
+  EXPECT_EQ(run["variant"], "static");
+  const nlohmann::json& trace = run["passes"][0];
+  EXPECT_EQ(trace["name"], "Trace");
+  EXPECT_DOUBLE_EQ(trace["ms"].get<double>(), 10.0);
+  EXPECT_DOUBLE_EQ(trace["work"]["textureSamples"]["perFrame"].get<double>(), 1e6);
+  EXPECT_DOUBLE_EQ(trace["work"]["textureSamples"]["ceiling"].get<double>(), 200e6);
+  EXPECT_DOUBLE_EQ(trace["work"]["textureSamples"]["fraction"].get<double>(), 0.5);
+  EXPECT_TRUE(trace["work"]["textureSamples"]["gpuCounted"].get<bool>());
+  EXPECT_TRUE(trace["work"]["rays"]["fraction"].is_null());
+  EXPECT_TRUE(run["passes"][1]["work"].empty());
+  std::filesystem::remove(path);
+}
+
+TEST(WorkReport, UnwritablePathIsAOneLineError) {
+  std::string error;
+  EXPECT_FALSE(writeJsonFile("/nonexistent-folder/x.json", nlohmann::json::object(), &error));
+  EXPECT_NE(error.find("cannot write /nonexistent-folder/x.json"), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos);
+}
+
+}  // namespace
+}  // namespace bounce
