@@ -57,6 +57,7 @@ void main() {
   }
   irradiance /= float(cones);
   ambient /= float(cones);
+  countWork(WORK_TEXTURE_SAMPLES, vxgiFetches);
 #if VXGI_AO_MODE
   imageStore(outTraced, coarse, vec4(saturate(ambient)));
 #else

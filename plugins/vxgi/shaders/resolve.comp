@@ -10,6 +10,8 @@
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
 #include "vxgi/scratch.glsl"
+#define WORK_COUNTERS_BINDING 50
+#include "bounce/work_counters.glsl"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
@@ -62,9 +64,11 @@ void main() {
   int per = pc.scratchLayout.y;
   float density[6];
   vec3 emittance[6];
+  uint loads = 0u;  // 4-byte scratch texels read
   for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
 #if VXGI_AO_MODE
     float w = imageLoad(scratch, vxgiScratchCoord(t, d, pc.scratchLayout.x)).r;
+    loads += 1u;
     emittance[d] = vec3(0.0);
 #else
     float w = imageLoad(scratch, vxgiScratchCoord(t, d * per + 3, pc.scratchLayout.x)).r;
@@ -72,6 +76,7 @@ void main() {
     // density) is 0 whatever the colour sums hold, so they are not read (a quarter of the
     // loads for an empty voxel).
     vec3 sum = vec3(0.0);
+    loads += w > 0.0 ? 4u : 1u;
     if (w > 0.0)
       for (int c = 0; c < 3; ++c) sum[c] = imageLoad(scratch, vxgiScratchCoord(t, d * per + c, pc.scratchLayout.x)).r;
     // w ≈ 0 with a sum means nothing opaque emits here; 1e-6 only keeps the division
@@ -81,6 +86,15 @@ void main() {
     density[d] = vxgiDensityFromOpacity(saturate(isnan(w) ? 0.0 : w));
     emittance[d] *= density[d];
   }
+  // Stored texels: one per texture, twice on slice 0 (its guard copy).
+#if VXGI_AO_MODE
+  const uint texels = uint(VXGI_DIRECTIONS / 3), texelBytes = 4u;
+#elif VXGI_EMITTANCE_FP16
+  const uint texels = uint(VXGI_DIRECTIONS), texelBytes = 8u;
+#else
+  const uint texels = uint(VXGI_DIRECTIONS), texelBytes = 4u;
+#endif
+  countWork(WORK_IMAGE_BYTES, 4u * loads + texels * texelBytes * (t.z == 0 ? 2u : 1u));
 #if VXGI_AO_MODE
   VXGI_STORE_CLIP(voxelsOut0, t, level, vec4(density[0], density[1], density[2], 0.0))
 #if VXGI_DIRECTIONS == 6

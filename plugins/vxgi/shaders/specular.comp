@@ -27,5 +27,6 @@ void main() {
   args.direction = R;
   args.coneFactor = max(2.0 * alpha, pc.extra.z);
   ConeTracingResults cone = TraceCone(args);
+  countWork(WORK_TEXTURE_SAMPLES, vxgiFetches);
   imageStore(outTraced, pixel, vec4(sanitize(cone.irradiance * INV_PI * pc.tracing.x, HALF_MAX), 1.0));
 }

@@ -4,6 +4,8 @@
 
 #include "bounce/common.glsl"
 #include "bounce/gbuffer.glsl"
+#define WORK_COUNTERS_BINDING 30
+#include "bounce/work_counters.glsl"
 #ifndef VXGI_NO_TRACING  // the interpolation pass reads only the G-buffer
 #include "vxgi/trace_cone.glsl"
 #endif

@@ -11,6 +11,8 @@
 #include "bounce/lights.glsl"
 #include "vxgi/clip_map.glsl"
 #include "vxgi/scratch.glsl"
+#define WORK_COUNTERS_BINDING 40
+#include "bounce/work_counters.glsl"  // before shadows.glsl: its taps count themselves
 
 SCENE_DRAW_PUSH_CONSTANTS(ivec4 regionMin; ivec4 regionMax; ivec4 innerMin; ivec4 innerMax; ivec4 scratchLayout;
                           vec4 ambient;)
@@ -148,6 +150,7 @@ void main() {
     voxel[gAxis] = k;
     if (!inBox(voxel, draw.regionMin, draw.regionMax) || inBox(voxel, draw.innerMin, draw.innerMax)) continue;
     ivec3 t = vxgiWrap(voxel);
+    uint atomics = 0u;  // float atomic adds into the scratch volume: 4 bytes read, 4 written
     for (int axis = 0; axis < 3; ++axis) {
       for (int s = 0; s < 2; ++s) {
         float facing = s == 0 ? n[axis] : -n[axis];  // > 0: the front faces direction ±axis
@@ -161,14 +164,17 @@ void main() {
         int base = direction * perDirection;
 #if VXGI_AO_MODE
         imageAtomicAdd(scratch, vxgiScratchCoord(t, base, draw.scratchLayout.x), w);
+        atomics += 1u;
 #else
         vec3 radiance = frontSide || omni ? front : back;  // omni: the front radiance, every way
         imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 3, draw.scratchLayout.x), w);
         imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 0, draw.scratchLayout.x), radiance.r * emitWeight);
         imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 1, draw.scratchLayout.x), radiance.g * emitWeight);
         imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 2, draw.scratchLayout.x), radiance.b * emitWeight);
+        atomics += 4u;
 #endif
       }
     }
+    countWork(WORK_IMAGE_BYTES, 8u * atomics);
   }
 }

@@ -155,6 +155,11 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
               .storage("outHistorySurface", t->writeSurface);
         }
         ctx.dispatchThreads(pipeline, bind, {push.sizes.x, push.sizes.y, 1}, push);
+        // Per pixel: its depth and normal (12 B), four samples' depth, normal and value
+        // (4 × 20 B), the result (8 B); with the filter, history and surface read and written
+        // (4 × 8 B).
+        const uint64_t pixels = uint64_t(push.sizes.x) * uint64_t(push.sizes.y);
+        ctx.addWork(WorkUnit::ImageBytes, pixels * (12u + 4u * 20u + 8u + (t ? 32u : 0u)));
         // Recorded, so it runs: this frame's view is the next one's previous.
         if (t) history->end(view);
       };

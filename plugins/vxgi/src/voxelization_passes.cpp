@@ -179,6 +179,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             VkClearColorValue zero{};
             VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
             vkCmdClearColorImage(ctx.cmd(), ctx.image(sums).handle(), ctx.layout(sums), &zero, 1, &range);
+            const VkExtent3D e = ctx.image(sums).extent();
+            ctx.addWork(WorkUnit::ImageBytes, uint64_t(e.width) * e.height * e.depth * 4u);  // R32F written
           };
         });
 
@@ -309,6 +311,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         const glm::ivec3 size = inner.max - inner.min;
         DownsamplePush push{glm::ivec4(inner.min, int32_t(level)), glm::ivec4(size, 0)};
         ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
+        // Per output voxel: 8 children read and 1 texel written per texture (guard copies,
+        // 1/size of them, left out).
+        ctx.addWork(WorkUnit::ImageBytes, uint64_t(size.x) * size.y * size.z * 9u * format.bytesPerVoxel());
       };
     });
   }
@@ -332,6 +337,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         bindStorage(bind, "voxelsDst", h.mips, mip);
         DownsamplePush push{glm::ivec4(0), glm::ivec4(glm::ivec3(int32_t(size)), mip == 0 ? 1 : 2)};
         ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
+        ctx.addWork(WorkUnit::ImageBytes, uint64_t(size) * size * size * 9u * format.bytesPerVoxel());
         // The next mip reads what this one wrote.
         gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                            VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

@@ -197,7 +197,17 @@ VxgiSample vxgiCombine(vec3 r, vec4 x, vec4 y, vec4 z) {
                   textureLod(voxels##suffix##2, c, mip));
 #endif
 
+// Filtered fetches taken by this invocation (work reports, bounce/work_counters.glsl):
+// what one vxgiSampleClip or vxgiSampleMip reads.
+uint vxgiFetches = 0u;
+#if VXGI_AO_MODE
+const uint VXGI_FETCHES_PER_SAMPLE = uint(VXGI_DIRECTIONS / 3);
+#else
+const uint VXGI_FETCHES_PER_SAMPLE = 3u;
+#endif
+
 VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
+  vxgiFetches += VXGI_FETCHES_PER_SAMPLE;
   vec3 c = vxgiClipCoord(p, level);
   VxgiSample s;
   VXGI_FETCH_FACING(Clip, c, 0.0, r, s)
@@ -205,6 +215,7 @@ VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
 }
 
 VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
+  vxgiFetches += VXGI_FETCHES_PER_SAMPLE;
   vec3 c = vxgiMipCoord(p);
   VxgiSample s;
   VXGI_FETCH_FACING(Mip, c, mip, r, s)
