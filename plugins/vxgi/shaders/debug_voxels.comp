@@ -20,7 +20,8 @@ vec4 fetchVoxel(vec3 p, int level, out bool inside) {
   ivec3 c = ivec3(floor(p / vxgiVoxelSize(level)));
   ivec3 local = c - clipMap.levelOrigin[level].xyz;
   inside = all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, ivec3(clipMap.mapSize)));
-  ivec3 t = vxgiStorageTexel(vxgiWrap(c), level);
+  ivec3 t = vxgiStorageTexel(vxgiWrap(c), level, 0);
+  ivec3 tNegative = vxgiStorageTexel(vxgiWrap(c), level, VXGI_SIGNS - 1);  // sign 1 where stacked
   float density = 0.0;
   vec3 e = vec3(0.0);
 #if VXGI_AO_MODE
@@ -37,9 +38,9 @@ vec4 fetchVoxel(vec3 p, int level, out bool inside) {
   f[1] = texelFetch(voxelsClip1, t, 0);
   f[2] = texelFetch(voxelsClip2, t, 0);
 #if VXGI_DIRECTIONS == 6
-  f[3] = texelFetch(voxelsClip3, t, 0);
-  f[4] = texelFetch(voxelsClip4, t, 0);
-  f[5] = texelFetch(voxelsClip5, t, 0);
+  f[3] = texelFetch(voxelsClip0, tNegative, 0);
+  f[4] = texelFetch(voxelsClip1, tNegative, 0);
+  f[5] = texelFetch(voxelsClip2, tNegative, 0);
 #endif
   for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
     density = max(density, f[d].a);

@@ -5,9 +5,10 @@
 // average of its columns (in opacity and radiance; stored again as density, see
 // clip_map.glsl). So a cube of one voxel is 100% opaque at its own level, 25%
 // at the next and 6.25% at the one after, and a wall stays opaque along its normal.
-//   mode 0: clipped level L−1 → the inner box of level L (what level L−1 covers)
-//   mode 1: the coarsest clipped level → mip 0 of the pyramid
-//   mode 2: pyramid mip m → mip m+1
+//   VXGI_DOWNSAMPLE_MODE 0: clipped level L−1 → the inner box of level L (what level L−1
+//                           covers)
+//   VXGI_DOWNSAMPLE_MODE 1: the coarsest clipped level → mip 0 of the pyramid
+//   VXGI_DOWNSAMPLE_MODE 2: pyramid mip m → mip m+1
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
@@ -16,7 +17,7 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(push_constant) uniform Push {
   ivec4 dstMin;   // mode 0: first voxel (world voxels of the destination level), w: level; else xyz 0
-  ivec4 dstSize;  // voxels to write; w: mode
+  ivec4 dstSize;  // voxels to write
 } pc;
 
 #if VXGI_AO_MODE || !VXGI_EMITTANCE_FP16
@@ -24,8 +25,23 @@ layout(push_constant) uniform Push {
 #else
 #define VOXEL_FORMAT rgba16f
 #endif
-// Source and destination: texture i of clip_map.glsl (facing direction i, or in
-// ambient-occlusion mode the densities of directions 3i..3i+2).
+
+// VXGI_DOWNSAMPLE_MODE (set by the pass) picks the layouts: the clipped levels are
+// stacked (levels along Z, facing signs along Y: clip_map.glsl), the pyramid holds one
+// texture per facing direction (or, without emittance, per three).
+#if VXGI_DOWNSAMPLE_MODE == 2
+#define SRC_STACKED 0
+#else
+#define SRC_STACKED 1
+#endif
+#if VXGI_DOWNSAMPLE_MODE == 0
+#define DST_STACKED 1
+#else
+#define DST_STACKED 0
+#endif
+
+// Texture, and facing sign within it, of facing direction d (0..5: +X +Y +Z −X −Y −Z):
+// stacked, ±a share texture a; in the pyramid each direction has its own.
 layout(binding = 40, VOXEL_FORMAT) uniform readonly image3D voxelsSrc0;
 layout(binding = 30, VOXEL_FORMAT) uniform writeonly image3D voxelsDst0;
 #if VXGI_DIRECTIONS == 6 || !VXGI_AO_MODE
@@ -35,31 +51,50 @@ layout(binding = 31, VOXEL_FORMAT) uniform writeonly image3D voxelsDst1;
 #if !VXGI_AO_MODE
 layout(binding = 42, VOXEL_FORMAT) uniform readonly image3D voxelsSrc2;
 layout(binding = 32, VOXEL_FORMAT) uniform writeonly image3D voxelsDst2;
-#if VXGI_DIRECTIONS == 6
+#if VXGI_DIRECTIONS == 6 && !SRC_STACKED
 layout(binding = 43, VOXEL_FORMAT) uniform readonly image3D voxelsSrc3;
 layout(binding = 44, VOXEL_FORMAT) uniform readonly image3D voxelsSrc4;
 layout(binding = 45, VOXEL_FORMAT) uniform readonly image3D voxelsSrc5;
+#define SRC3 voxelsSrc3
+#define SRC4 voxelsSrc4
+#define SRC5 voxelsSrc5
+#else
+#define SRC3 voxelsSrc0
+#define SRC4 voxelsSrc1
+#define SRC5 voxelsSrc2
+#endif
+#if VXGI_DIRECTIONS == 6 && !DST_STACKED
 layout(binding = 33, VOXEL_FORMAT) uniform writeonly image3D voxelsDst3;
 layout(binding = 34, VOXEL_FORMAT) uniform writeonly image3D voxelsDst4;
 layout(binding = 35, VOXEL_FORMAT) uniform writeonly image3D voxelsDst5;
+#define DST3 voxelsDst3
+#define DST4 voxelsDst4
+#define DST5 voxelsDst5
+#else
+#define DST3 voxelsDst0
+#define DST4 voxelsDst1
+#define DST5 voxelsDst2
 #endif
 #endif
+// The facing sign a texture holds direction 3..5 at (1 only where stacked in pairs).
+#define SRC_NEGATIVE (SRC_STACKED != 0 && VXGI_SIGNS == 2 ? 1 : 0)
+#define DST_NEGATIVE (DST_STACKED != 0 && VXGI_SIGNS == 2 ? 1 : 0)
 
 // Where child `o` (0/1 per axis) of output voxel `local` lives in the source image.
-ivec3 childCoord(ivec3 local, ivec3 o) {
-  int mode = pc.dstSize.w;
-  if (mode == 0) {
-    int level = pc.dstMin.w;
-    ivec3 child = 2 * (pc.dstMin.xyz + local) + o;  // world voxels of level − 1
-    return vxgiStorageTexel(vxgiWrap(child), level - 1);
-  }
-  if (mode == 1) return vxgiStorageTexel(2 * local + o, clipMap.levelCount - 1);  // local is toroidal already
+ivec3 childCoord(ivec3 local, ivec3 o, int sign) {
+#if VXGI_DOWNSAMPLE_MODE == 0
+  ivec3 child = 2 * (pc.dstMin.xyz + local) + o;  // world voxels of level − 1
+  return vxgiStorageTexel(vxgiWrap(child), pc.dstMin.w - 1, sign);
+#elif VXGI_DOWNSAMPLE_MODE == 1
+  return vxgiStorageTexel(2 * local + o, clipMap.levelCount - 1, sign);  // local is toroidal already
+#else
   return 2 * local + o;
+#endif
 }
 
 // The 2×2×2 block of one source texture, child (x, y, z) at index x + 2y + 4z.
-#define LOAD_BLOCK(image, local, block)                                               \
-  for (int i_ = 0; i_ < 8; ++i_) block[i_] = imageLoad(image, childCoord(local, ivec3(i_ & 1, (i_ >> 1) & 1, i_ >> 2)));
+#define LOAD_BLOCK(image, sign, local, block)                                             \
+  for (int i_ = 0; i_ < 8; ++i_) block[i_] = imageLoad(image, childCoord(local, ivec3(i_ & 1, (i_ >> 1) & 1, i_ >> 2), sign));
 
 // One facing direction d of the block; each child as (radiance × density, density)
 // in stored units. Returns the block's value in the same units.
@@ -95,13 +130,12 @@ vec4 downsampleFacing(vec4 child[8], int d) {
   return vec4((e * 0.25) / vxgiAlphaPerDensity(density, 1.0), density);
 }
 
-// Stores the block's value: into the clipped level (with its guard slice) or a mip.
-#define STORE_OUTPUT(image, local, value)                                                 \
-  if (pc.dstSize.w == 0) {                                                                \
-    VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, value)           \
-  } else {                                                                                \
-    imageStore(image, local, value);                                                      \
-  }
+// Stores the block's value: into the clipped level (with its guard copies) or a mip.
+#if DST_STACKED
+#define STORE_OUTPUT(image, sign, local, value) VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, value)
+#else
+#define STORE_OUTPUT(image, sign, local, value) imageStore(image, local, value);
+#endif
 
 #if VXGI_AO_MODE
 // Ambient-occlusion mode: texture i packs the densities of directions 3i..3i+2.
@@ -121,26 +155,26 @@ void main() {
   if (any(greaterThanEqual(local, pc.dstSize.xyz))) return;
   vec4 block[8];
 #if VXGI_AO_MODE
-  LOAD_BLOCK(voxelsSrc0, local, block)
-  STORE_OUTPUT(voxelsDst0, local, downsampleDensities(block, 0))
+  LOAD_BLOCK(voxelsSrc0, 0, local, block)
+  STORE_OUTPUT(voxelsDst0, 0, local, downsampleDensities(block, 0))
 #if VXGI_DIRECTIONS == 6
-  LOAD_BLOCK(voxelsSrc1, local, block)
-  STORE_OUTPUT(voxelsDst1, local, downsampleDensities(block, 3))
+  LOAD_BLOCK(voxelsSrc1, 0, local, block)
+  STORE_OUTPUT(voxelsDst1, 0, local, downsampleDensities(block, 3))
 #endif
 #else
-  LOAD_BLOCK(voxelsSrc0, local, block)
-  STORE_OUTPUT(voxelsDst0, local, downsampleFacing(block, 0))
-  LOAD_BLOCK(voxelsSrc1, local, block)
-  STORE_OUTPUT(voxelsDst1, local, downsampleFacing(block, 1))
-  LOAD_BLOCK(voxelsSrc2, local, block)
-  STORE_OUTPUT(voxelsDst2, local, downsampleFacing(block, 2))
+  LOAD_BLOCK(voxelsSrc0, 0, local, block)
+  STORE_OUTPUT(voxelsDst0, 0, local, downsampleFacing(block, 0))
+  LOAD_BLOCK(voxelsSrc1, 0, local, block)
+  STORE_OUTPUT(voxelsDst1, 0, local, downsampleFacing(block, 1))
+  LOAD_BLOCK(voxelsSrc2, 0, local, block)
+  STORE_OUTPUT(voxelsDst2, 0, local, downsampleFacing(block, 2))
 #if VXGI_DIRECTIONS == 6
-  LOAD_BLOCK(voxelsSrc3, local, block)
-  STORE_OUTPUT(voxelsDst3, local, downsampleFacing(block, 3))
-  LOAD_BLOCK(voxelsSrc4, local, block)
-  STORE_OUTPUT(voxelsDst4, local, downsampleFacing(block, 4))
-  LOAD_BLOCK(voxelsSrc5, local, block)
-  STORE_OUTPUT(voxelsDst5, local, downsampleFacing(block, 5))
+  LOAD_BLOCK(SRC3, SRC_NEGATIVE, local, block)
+  STORE_OUTPUT(DST3, DST_NEGATIVE, local, downsampleFacing(block, 3))
+  LOAD_BLOCK(SRC4, SRC_NEGATIVE, local, block)
+  STORE_OUTPUT(DST4, DST_NEGATIVE, local, downsampleFacing(block, 4))
+  LOAD_BLOCK(SRC5, SRC_NEGATIVE, local, block)
+  STORE_OUTPUT(DST5, DST_NEGATIVE, local, downsampleFacing(block, 5))
 #endif
 #endif
 }

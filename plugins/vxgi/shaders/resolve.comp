@@ -35,15 +35,11 @@ layout(binding = 31, rgba8) uniform writeonly image3D voxelsOut1;
 #else
 #define VOXEL_FORMAT rgba8
 #endif
-// Facing direction d in texture d: rgb radiance × density, a density.
+// Facing directions ±a in texture a (the sign stacked along Y): rgb radiance × density,
+// a density.
 layout(binding = 30, VOXEL_FORMAT) uniform writeonly image3D voxelsOut0;
 layout(binding = 31, VOXEL_FORMAT) uniform writeonly image3D voxelsOut1;
 layout(binding = 32, VOXEL_FORMAT) uniform writeonly image3D voxelsOut2;
-#if VXGI_DIRECTIONS == 6
-layout(binding = 33, VOXEL_FORMAT) uniform writeonly image3D voxelsOut3;
-layout(binding = 34, VOXEL_FORMAT) uniform writeonly image3D voxelsOut4;
-layout(binding = 35, VOXEL_FORMAT) uniform writeonly image3D voxelsOut5;
-#endif
 #endif
 
 // Radiance × density and density in storage units: RGBA8 saturates radiance at 1 /
@@ -86,7 +82,8 @@ void main() {
     density[d] = vxgiDensityFromOpacity(saturate(isnan(w) ? 0.0 : w));
     emittance[d] *= density[d];
   }
-  // Stored texels: one per texture, twice on slice 0 (its guard copy).
+  // Stored texels: one per direction (or per texture without emittance); the guard
+  // copies are the VXGI.ClipGuards pass's.
 #if VXGI_AO_MODE
   const uint texels = uint(VXGI_DIRECTIONS / 3), texelBytes = 4u;
 #elif VXGI_EMITTANCE_FP16
@@ -94,20 +91,20 @@ void main() {
 #else
   const uint texels = uint(VXGI_DIRECTIONS), texelBytes = 4u;
 #endif
-  countWork(WORK_IMAGE_BYTES, 4u * loads + texels * texelBytes * (t.z == 0 ? 2u : 1u));
+  countWork(WORK_IMAGE_BYTES, 4u * loads + texels * texelBytes);
 #if VXGI_AO_MODE
-  VXGI_STORE_CLIP(voxelsOut0, t, level, vec4(density[0], density[1], density[2], 0.0))
+  VXGI_STORE_CLIP(voxelsOut0, t, level, 0, vec4(density[0], density[1], density[2], 0.0))
 #if VXGI_DIRECTIONS == 6
-  VXGI_STORE_CLIP(voxelsOut1, t, level, vec4(density[3], density[4], density[5], 0.0))
+  VXGI_STORE_CLIP(voxelsOut1, t, level, 0, vec4(density[3], density[4], density[5], 0.0))
 #endif
 #else
-  VXGI_STORE_CLIP(voxelsOut0, t, level, encodeVoxel(emittance[0], density[0]))
-  VXGI_STORE_CLIP(voxelsOut1, t, level, encodeVoxel(emittance[1], density[1]))
-  VXGI_STORE_CLIP(voxelsOut2, t, level, encodeVoxel(emittance[2], density[2]))
+  VXGI_STORE_CLIP(voxelsOut0, t, level, 0, encodeVoxel(emittance[0], density[0]))
+  VXGI_STORE_CLIP(voxelsOut1, t, level, 0, encodeVoxel(emittance[1], density[1]))
+  VXGI_STORE_CLIP(voxelsOut2, t, level, 0, encodeVoxel(emittance[2], density[2]))
 #if VXGI_DIRECTIONS == 6
-  VXGI_STORE_CLIP(voxelsOut3, t, level, encodeVoxel(emittance[3], density[3]))
-  VXGI_STORE_CLIP(voxelsOut4, t, level, encodeVoxel(emittance[4], density[4]))
-  VXGI_STORE_CLIP(voxelsOut5, t, level, encodeVoxel(emittance[5], density[5]))
+  VXGI_STORE_CLIP(voxelsOut0, t, level, 1, encodeVoxel(emittance[3], density[3]))
+  VXGI_STORE_CLIP(voxelsOut1, t, level, 1, encodeVoxel(emittance[4], density[4]))
+  VXGI_STORE_CLIP(voxelsOut2, t, level, 1, encodeVoxel(emittance[5], density[5]))
 #endif
 #endif
 }

@@ -22,7 +22,7 @@ uint32_t ClipMapFormat::bytesPerVoxel() const {
 uint32_t ClipMapFormat::mipCount() const { return mapSize >= 2 ? uint32_t(std::countr_zero(mapSize)) : 0u; }
 
 uint64_t ClipMapFormat::clipBytes() const {
-  return uint64_t(stackLevels) * mapSize * mapSize * levelSlices() * bytesPerVoxel();
+  return uint64_t(stackLevels) * mapSize * levelSlices() * levelSlices() * bytesPerVoxel();
 }
 
 uint64_t ClipMapFormat::mipBytes() const {

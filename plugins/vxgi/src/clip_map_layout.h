@@ -4,22 +4,25 @@
 // an anchor, then a mip pyramid of the coarsest level down to 1³.
 //
 // Storage, per voxel, indexed by the direction a surface faces ("facing direction"):
-// one texture per facing direction (6 signed, or 3 axes), RGBA = (radiance × density,
-// density), where density is the optical depth of the projected coverage normalised to
-// 0..1 (linear filtering then averages what Beer–Lambert integrates; see
-// shaders/vxgi/clip_map.glsl). RGBA8 (rgb scaled by the storage scale) or RGBA16F. A
-// cone step needs the three facing directions against its axis, each one texture fetch
-// holding both density and emittance: 3 fetches per level instead of 2 opacity + 3
-// emittance textures. 3 directions in RGBA8 cost 12 B per voxel, 6 in FP16 48 B (the
-// seed keeps opacity apart: 16..56 B). Ambient-occlusion mode stores density alone,
-// 3 or 6 directions in one or two RGBA8 textures (4 or 8 B).
+// (radiance × density, density) per facing direction (6 signed, or 3 axes), where
+// density is the optical depth of the projected coverage normalised to 0..1 (linear
+// filtering then averages what Beer–Lambert integrates; see shaders/vxgi/clip_map.glsl).
+// RGBA8 (rgb scaled by the storage scale) or RGBA16F. A cone step needs the three facing
+// directions against its axis, each one texture fetch holding both density and emittance:
+// 3 fetches per level instead of 2 opacity + 3 emittance textures. 3 directions in RGBA8
+// cost 12 B per voxel, 6 in FP16 48 B (the seed keeps opacity apart: 16..56 B).
+// Ambient-occlusion mode stores density alone, 3 or 6 directions in one or two RGBA8
+// textures (4 or 8 B).
 //
-// Clipped levels are stacked along Z in one 3D texture per facing direction and
-// addressed toroidally: world voxel c of level l lives at (c mod size) + (0, 0,
-// l·(size + 1)). The extra slice per level (the "guard slice", z = size) repeats slice
-// 0, so one hardware trilinear fetch covers the toroidal seam along Z as the sampler's
-// repeat addressing does along X and Y; moving the anchor only rewrites the slabs that
-// came into view.
+// The clipped levels of the facing directions ±a share one 3D texture per axis a: levels
+// stacked along Z and the two signs along Y, addressed toroidally: world voxel c of level
+// l and sign s lives at (c mod size) + (0, s·(size + 1), l·(size + 1)). The extra row per
+// sign and slice per level (the "guard") repeat row and slice 0, so one hardware
+// trilinear fetch covers the toroidal seams along Y and Z as the sampler's repeat
+// addressing does along X, and the sign is a coordinate: a cone picks the direction
+// facing it without a branch (a CPU device runs both sides of a branch its invocations
+// may take differently, which doubled every fetch). The mip pyramid keeps one texture per
+// facing direction. Moving the anchor only rewrites the slabs that came into view.
 
 #include <bounce/scene/aabb.h>
 
@@ -48,12 +51,20 @@ struct ClipMapFormat {
   uint32_t opacityTextureCount() const { return ambientOcclusionMode ? (sixDirections ? 2u : 1u) : 0u; }
   /// Bytes per voxel of one clipped level or mip: 12..48 B (4 or 8 B without emittance).
   uint32_t bytesPerVoxel() const;
-  /// Z slices each clipped level takes in the stacked textures: size + the guard slice.
+  /// Z slices each clipped level takes in the stacked textures: size + the guard slice
+  /// (and Y rows per facing sign: size + the guard row).
   uint32_t levelSlices() const { return mapSize + 1; }
+  /// Facing signs stacked along Y in one clipped-level texture: ±axis share a texture
+  /// with 6 directions and emittance, so a cone step picks its sign by coordinate.
+  uint32_t stackedSigns() const { return sixDirections && !ambientOcclusionMode ? 2u : 1u; }
+  /// Textures of the clipped levels: one per axis with emittance, else the opacity ones.
+  uint32_t clipTextureCount() const { return ambientOcclusionMode ? opacityTextureCount() : 3u; }
+  /// Textures of the mip pyramid: one per facing direction with emittance.
+  uint32_t mipTextureCount() const { return ambientOcclusionMode ? opacityTextureCount() : directionCount(); }
   /// Coarser mip levels of the coarsest clipped level: size/2 ... 1.
   uint32_t mipCount() const;
-  /// Device memory of every clip-map texture: levels × size² × (size + 1) × bytes per
-  /// voxel (the guard slice included) + mips.
+  /// Device memory of every clip-map texture: levels × size × (size + 1)² × bytes per
+  /// voxel (the guard row and slice included) + mips.
   uint64_t bytes() const;
   uint64_t clipBytes() const;
   uint64_t mipBytes() const;

@@ -10,8 +10,9 @@ TextureDesc clipDesc(const ClipMapFormat& f, VkFormat format) {
   TextureDesc d;
   d.type = TextureType::Tex3D;
   d.format = format;
-  d.width = d.height = f.mapSize;
-  d.depth = f.levelSlices() * f.stackLevels;  // levels stacked along Z, each with its guard slice
+  d.width = f.mapSize;
+  d.height = f.levelSlices() * f.stackedSigns();  // facing signs stacked along Y, each with its guard row
+  d.depth = f.levelSlices() * f.stackLevels;      // levels stacked along Z, each with its guard slice
   return d;
 }
 
@@ -38,12 +39,14 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
   clip_.clear();
   mips_.clear();
   const bool ao = format.ambientOcclusionMode;
-  const uint32_t count = ao ? format.opacityTextureCount() : format.directionTextureCount();
-  for (uint32_t i = 0; i < count; ++i) {
-    const std::string name = ao ? fmt::format("VXGI.Opacity{}", i) : fmt::format("VXGI.Facing{}", i);
-    clip_.push_back(std::make_unique<PersistentTexture>(name, clipDesc(format, voxelFormat(format))));
-    mips_.push_back(std::make_unique<PersistentTexture>(name + "Mips", mipDesc(format, voxelFormat(format))));
-  }
+  for (uint32_t i = 0; i < format.clipTextureCount(); ++i)
+    clip_.push_back(std::make_unique<PersistentTexture>(
+        ao ? fmt::format("VXGI.Opacity{}", i) : fmt::format("VXGI.Axis{}", i),
+        clipDesc(format, voxelFormat(format))));
+  for (uint32_t i = 0; i < format.mipTextureCount(); ++i)
+    mips_.push_back(std::make_unique<PersistentTexture>(
+        ao ? fmt::format("VXGI.OpacityMips{}", i) : fmt::format("VXGI.FacingMips{}", i),
+        mipDesc(format, voxelFormat(format))));
   return true;
 }
 

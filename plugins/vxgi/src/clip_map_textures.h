@@ -14,9 +14,10 @@
 
 namespace bounce::vxgi {
 
-/// This frame's versions of every clip-map texture: texture i of the clipped levels and
-/// of the mip pyramid holds facing direction i (radiance × density, density), or in
-/// ambient-occlusion mode the densities of facing directions 3i..3i+2.
+/// This frame's versions of every clip-map texture: clip texture a holds the facing
+/// directions ±a (signs stacked in Y), mip texture d facing direction d (radiance ×
+/// density, density); in ambient-occlusion mode texture i (both) the densities of facing
+/// directions 3i..3i+2 (clip_map_layout.h).
 struct ClipMapHandles {
   std::vector<TextureHandle> clip, mips;
   BufferHandle constants;  ///< ClipMapConstants for this frame

@@ -18,6 +18,14 @@ gpu::ShaderSource shader(const char* file, const ClipMapFormat& format) {
   return {std::string(kShaders) + file, shaderDefines(format)};
 }
 
+// downsample.comp for one of its modes: 0 clipped level → the next one's inner box, 1 the
+// coarsest clipped level → mip 0, 2 mip → mip (each mode reads and writes other layouts).
+gpu::ShaderSource downsampleShader(const ClipMapFormat& format, int mode) {
+  gpu::ShaderSource s = shader("downsample.comp", format);
+  s.defines.emplace_back("VXGI_DOWNSAMPLE_MODE", std::to_string(mode));
+  return s;
+}
+
 // The scratch volume of float sums: `channels` per voxel (4 per facing direction: rgb ×
 // coverage and coverage; 1 in ambient-occlusion mode), tiled `perRow` along X and the
 // rest along Z so no side exceeds 2048 texels (the usual maxImageDimension3D). perRow is
@@ -302,7 +310,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       });
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("downsample.comp", format));
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(format, 0));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants);
         // Source and destination are the same textures, different levels of the stack.
@@ -318,6 +326,51 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     });
   }
 
+  // The guard row and slice of every level and sign (clip_map_layout.h): copies of row 0
+  // and slice 0, so a trilinear fetch spans the toroidal seams. Copied here, once for all
+  // levels, rather than stored twice by every writer under a per-voxel branch.
+  graph.addPass("VXGI.ClipGuards", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    for (TextureHandle& h : handles.clip) {
+      b.read(h, Access::TransferSrc);
+      h = b.write(h, Access::TransferDst);
+    }
+    b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
+    const std::vector<TextureHandle> clip = handles.clip;
+    return [=](PassContext& ctx) {
+      const int32_t n = int32_t(format.mapSize), rows = int32_t(format.levelSlices());
+      const uint32_t height = format.levelSlices() * format.stackedSigns();
+      std::vector<VkImageCopy> slices, rowCopies;
+      for (int32_t l = 0; l < int32_t(format.stackLevels); ++l) {
+        VkImageCopy c{};
+        c.srcSubresource = c.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        c.srcOffset = {0, 0, l * rows};
+        c.dstOffset = {0, 0, l * rows + n};
+        c.extent = {uint32_t(n), height, 1};
+        slices.push_back(c);
+        for (int32_t s = 0; s < int32_t(format.stackedSigns()); ++s) {
+          // Rows over all n + 1 slices, the guard slice included: that fills the corner.
+          c.srcOffset = {0, s * rows, l * rows};
+          c.dstOffset = {0, s * rows + n, l * rows};
+          c.extent = {uint32_t(n), 1, uint32_t(rows)};
+          rowCopies.push_back(c);
+        }
+      }
+      const uint64_t texelBytes = format.ambientOcclusionMode || !format.emittanceFp16 ? 4u : 8u;
+      for (TextureHandle h : clip) {
+        const VkImage image = ctx.image(h).handle();
+        const VkImageLayout layout = ctx.layout(h);
+        vkCmdCopyImage(ctx.cmd(), image, layout, image, layout, uint32_t(slices.size()), slices.data());
+        // The row copies read the guard slice just written.
+        gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        vkCmdCopyImage(ctx.cmd(), image, layout, image, layout, uint32_t(rowCopies.size()), rowCopies.data());
+        ctx.addWork(WorkUnit::ImageBytes, 2u * texelBytes * uint64_t(n) *
+                                              (uint64_t(height) + uint64_t(rows) * format.stackedSigns()) *
+                                              format.stackLevels);
+      }
+    };
+  });
+
   graph.addPass("VXGI.Mips", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     BufferHandle constants = b.read(handles.constants, Access::StorageRead);
     for (TextureHandle h : handles.clip) b.read(h, Access::StorageRead);
@@ -325,9 +378,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     const ClipMapHandles h = handles;
     return [=](PassContext& ctx) {
-      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("downsample.comp", format));
       uint32_t size = format.mapSize / 2;
       for (uint32_t mip = 0; mip < format.mipCount(); ++mip, size /= 2) {
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(format, mip == 0 ? 1 : 2));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants);
         if (mip == 0)

@@ -14,15 +14,16 @@ TEST(ClipMapFormat, MemoryFollowsTheSeedsFormulaWithOpacityInsideEachDirection) 
   // Seed 001, slide 12: 32³ × 3 levels at 16 B/voxel = 1.5 MB … 256³ × 5 at 56 B ≈ 4.5 GB,
   // opacity kept apart from emittance. Here each facing direction's texel holds both
   // (radiance × density, density), so 3 RGBA8 directions are 12 B and 6 FP16 ones 48 B;
-  // each level also keeps one guard slice (size² voxels) for the toroidal seam along Z.
+  // each level also keeps a guard row and slice for the toroidal seams along Y and Z.
   ClipMapFormat small{.mapSize = 32, .stackLevels = 3, .sixDirections = false, .emittanceFp16 = false};
   EXPECT_EQ(small.bytesPerVoxel(), 12u);
   EXPECT_EQ(small.levelSlices(), 33u);
-  EXPECT_EQ(small.clipBytes(), 3ull * 32 * 32 * 33 * 12);
-  EXPECT_NEAR(double(small.clipBytes()) / (1024.0 * 1024.0), 1.5 * 12.0 / 16.0 * 33.0 / 32.0, 1e-9);
+  EXPECT_EQ(small.clipBytes(), 3ull * 32 * 33 * 33 * 12);
+  EXPECT_NEAR(double(small.clipBytes()) / (1024.0 * 1024.0), 1.5 * 12.0 / 16.0 * 33.0 * 33.0 / (32.0 * 32.0),
+              1e-9);
   ClipMapFormat large{.mapSize = 256, .stackLevels = 5, .sixDirections = true, .emittanceFp16 = true};
   EXPECT_EQ(large.bytesPerVoxel(), 48u);
-  EXPECT_EQ(large.clipBytes(), 5ull * 256 * 256 * 257 * 48);  // 4.04 GB against the seed's 4.70
+  EXPECT_EQ(large.clipBytes(), 5ull * 256 * 257 * 257 * 48);  // 4.06 GB against the seed's 4.70
   // Mips: size/2 … 1, an eighth of the voxels per step.
   uint64_t mipVoxels = 0;
   for (uint32_t s = 128; s >= 1; s /= 2) mipVoxels += uint64_t(s) * s * s;
@@ -33,7 +34,7 @@ TEST(ClipMapFormat, MemoryFollowsTheSeedsFormulaWithOpacityInsideEachDirection) 
 
 TEST(ClipMapTextures, AllocateExactlyTheFormula) {
   // The textures' own descriptions (what the graph allocates and reports per resource)
-  // add up to levels × size² × (size + 1) × bytes per voxel + mips, for every storage choice.
+  // add up to levels × size × (size + 1)² × bytes per voxel + mips, for every storage choice.
   for (bool six : {false, true})
     for (bool fp16 : {false, true})
       for (bool ao : {false, true}) {

@@ -48,10 +48,12 @@ layout(std430, binding = 0) readonly buffer VxgiClipMap {
 #define VXGI_CLIP_MAP_TEXTURES 1  // 0: only the placement (voxelization shaders)
 #endif
 #if VXGI_CLIP_MAP_TEXTURES
-// Clipped levels stacked along Z (each with its guard slice), and the mip pyramid of the
-// coarsest level (toroidal too: sampled with wrap-around). Texture d holds facing
-// direction d (+X +Y +Z −X −Y −Z): rgb radiance × density, a density. In
-// ambient-occlusion mode texture i holds the densities of facing directions 3i..3i+2.
+// Clipped levels stacked along Z (each with its guard slice), facing signs along Y (each
+// with its guard row), and the mip pyramid of the coarsest level (toroidal too: sampled
+// with wrap-around). With emittance, clip texture a holds the facing directions ±a
+// (+X +Y +Z; the sign stacked in Y), and pyramid texture d facing direction d (+X +Y +Z −X
+// −Y −Z): rgb radiance × density, a density. In ambient-occlusion mode texture i (both)
+// holds the densities of facing directions 3i..3i+2.
 layout(binding = 1) uniform sampler3D voxelsClip0;
 layout(binding = 9) uniform sampler3D voxelsMip0;
 #if VXGI_DIRECTIONS == 6 || !VXGI_AO_MODE
@@ -62,9 +64,6 @@ layout(binding = 10) uniform sampler3D voxelsMip1;
 layout(binding = 3) uniform sampler3D voxelsClip2;
 layout(binding = 11) uniform sampler3D voxelsMip2;
 #if VXGI_DIRECTIONS == 6
-layout(binding = 4) uniform sampler3D voxelsClip3;
-layout(binding = 5) uniform sampler3D voxelsClip4;
-layout(binding = 6) uniform sampler3D voxelsClip5;
 layout(binding = 12) uniform sampler3D voxelsMip3;
 layout(binding = 13) uniform sampler3D voxelsMip4;
 layout(binding = 14) uniform sampler3D voxelsMip5;
@@ -96,34 +95,49 @@ int vxgiFinestLevelAt(vec3 p, int from) {
 // integer divide), and it was most of the downsampling's time.
 ivec3 vxgiWrap(ivec3 c) { return c & ivec3(clipMap.mapSize - 1); }
 
-// Z slices per clipped level in the stacked textures: mapSize + the guard slice.
+// Facing signs stacked along Y in each clipped-level texture: with 6 directions and
+// emittance, texture a holds +a (sign 0) above −a (sign 1); otherwise one.
+#if VXGI_DIRECTIONS == 6 && !VXGI_AO_MODE
+#define VXGI_SIGNS 2
+#else
+#define VXGI_SIGNS 1
+#endif
+
+// Rows per sign and slices per level in the stacked textures: mapSize + the guard row
+// or slice.
 int vxgiLevelSlices() { return clipMap.mapSize + 1; }
 
-// Texel of toroidal voxel t (0..mapSize−1 per axis) of `level` in the stacked textures.
-ivec3 vxgiStorageTexel(ivec3 t, int level) { return t + ivec3(0, 0, level * vxgiLevelSlices()); }
+// Texel of toroidal voxel t (0..mapSize−1 per axis) of `level` and facing `sign` in the
+// stacked textures.
+ivec3 vxgiStorageTexel(ivec3 t, int level, int sign) {
+  return t + ivec3(0, sign, level) * vxgiLevelSlices();
+}
 
-// Writers of a clipped level store slice 0 twice: its guard copy at z = mapSize lets one
-// trilinear fetch span the toroidal seam (clip_map_layout.h). `image` is a storage image.
-#define VXGI_STORE_CLIP(image, t, level, value)                                           \
-  {                                                                                       \
-    imageStore(image, vxgiStorageTexel(t, level), value);                                 \
-    if ((t).z == 0) imageStore(image, vxgiStorageTexel(t, level) + ivec3(0, 0, clipMap.mapSize), value); \
-  }
+// Writers of a clipped level store each voxel once; the guard copies of row and slice 0
+// (at y = mapSize and z = mapSize, which let one trilinear fetch span the toroidal seams:
+// clip_map_layout.h) are copied afterwards by the VXGI.ClipGuards pass. Stores under
+// per-voxel branches would cost every voxel all of them on a CPU device. `image` is a
+// storage image.
+#define VXGI_STORE_CLIP(image, t, level, sign, value) imageStore(image, vxgiStorageTexel(t, level, sign), value);
 
 #if VXGI_CLIP_MAP_TEXTURES
-// Where world position p is in the stacked textures of a clipped level: X and Y as they
-// are (the sampler wraps them), Z wrapped into the level by hand. With the wrapped
-// texel-centre coordinate in [0, mapSize), a trilinear fetch reads slices z and z + 1 ≤
-// mapSize, the guard slice at the seam: one fetch per texture, never crossing into the
-// next level.
+// Where world position p is in the stacked textures of a clipped level, for facing sign
+// 0 (add vxgiSignOffset for sign 1): X as it is (the sampler wraps it), Y and Z wrapped
+// into the level's block by hand. With a wrapped texel-centre coordinate in
+// [0, mapSize), a trilinear fetch reads rows (slices) y and y + 1 ≤ mapSize, the guard at
+// the seam: one fetch per texture, never crossing into the next sign or level.
 vec3 vxgiClipCoord(vec3 p, int level) {
   vec3 u = p / vxgiVoxelSize(level) - 0.5;  // voxel-centre coordinates
   int n = clipMap.mapSize;
-  float z = floor(u.z);
-  float zWrapped = float(vxgiWrap(ivec3(0, 0, int(z))).z) + (u.z - z);
-  float slices = float(vxgiLevelSlices());
-  return vec3((u.xy + 0.5) / float(n), (float(level) * slices + zWrapped + 0.5) / (slices * float(clipMap.levelCount)));
+  vec2 yz = floor(u.yz);
+  vec2 wrapped = vec2(ivec2(yz) & ivec2(n - 1)) + (u.yz - yz);
+  float rows = float(vxgiLevelSlices());
+  return vec3((u.x + 0.5) / float(n), (wrapped.x + 0.5) / (rows * float(VXGI_SIGNS)),
+              (float(level) * rows + wrapped.y + 0.5) / (rows * float(clipMap.levelCount)));
 }
+
+// What moves a vxgiClipCoord from facing sign 0 to sign 1 (normalised Y).
+float vxgiSignOffset() { return 1.0 / float(VXGI_SIGNS); }
 
 // A sample of the mip pyramid at world position p and mip `mip` (fractional: the
 // hardware blends mips). The pyramid repeats with the coarsest level's extent.
@@ -166,8 +180,10 @@ VxgiSample vxgiCombine(vec3 r, vec4 x, vec4 y, vec4 z) {
 }
 
 // The three facing directions against r, one fetch each at coordinate c (a level of
-// the stack, or the pyramid at `mip`). Along a cone r's signs are fixed, so the
-// branches are uniform wherever neighbouring invocations trace the same cone.
+// the stack, or the pyramid at `mip`). No branch chooses a texture: a CPU device runs
+// both sides of a branch that neighbouring invocations might take differently, which
+// doubled every fetch. In the stack the sign is a coordinate (Y offset); in the pyramid
+// both signs are fetched and blended by a 0/1 weight.
 #if VXGI_AO_MODE
 #if VXGI_DIRECTIONS == 6
 #define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
@@ -183,13 +199,20 @@ VxgiSample vxgiCombine(vec3 r, vec4 x, vec4 y, vec4 z) {
   }
 #endif
 #elif VXGI_DIRECTIONS == 6
-#define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
+// Facing −r: travelling along +X, the surfaces facing −X (sign 1) stop the cone.
+#define VXGI_FETCH_FACING_CLIP(c, r, s)                                                    \
   {                                                                                        \
-    vec4 x_, y_, z_;                                                                       \
-    if (r.x > 0.0) x_ = textureLod(voxels##suffix##3, c, mip); else x_ = textureLod(voxels##suffix##0, c, mip); \
-    if (r.y > 0.0) y_ = textureLod(voxels##suffix##4, c, mip); else y_ = textureLod(voxels##suffix##1, c, mip); \
-    if (r.z > 0.0) z_ = textureLod(voxels##suffix##5, c, mip); else z_ = textureLod(voxels##suffix##2, c, mip); \
-    s = vxgiCombine(r, x_, y_, z_);                                                        \
+    vec3 sign_ = vec3(greaterThan(r, vec3(0.0))) * vxgiSignOffset();                       \
+    s = vxgiCombine(r, textureLod(voxelsClip0, c + vec3(0.0, sign_.x, 0.0), 0.0),          \
+                    textureLod(voxelsClip1, c + vec3(0.0, sign_.y, 0.0), 0.0),             \
+                    textureLod(voxelsClip2, c + vec3(0.0, sign_.z, 0.0), 0.0));            \
+  }
+#define VXGI_FETCH_FACING_MIP(c, mip, r, s)                                                \
+  {                                                                                        \
+    vec3 w_ = vec3(greaterThan(r, vec3(0.0)));                                             \
+    s = vxgiCombine(r, mix(textureLod(voxelsMip0, c, mip), textureLod(voxelsMip3, c, mip), w_.x), \
+                    mix(textureLod(voxelsMip1, c, mip), textureLod(voxelsMip4, c, mip), w_.y),   \
+                    mix(textureLod(voxelsMip2, c, mip), textureLod(voxelsMip5, c, mip), w_.z));  \
   }
 #else
 #define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
@@ -206,19 +229,24 @@ const uint VXGI_FETCHES_PER_SAMPLE = uint(VXGI_DIRECTIONS / 3);
 const uint VXGI_FETCHES_PER_SAMPLE = 3u;
 #endif
 
+#ifndef VXGI_FETCH_FACING_CLIP
+#define VXGI_FETCH_FACING_CLIP(c, r, s) VXGI_FETCH_FACING(Clip, c, 0.0, r, s)
+#define VXGI_FETCH_FACING_MIP(c, mip, r, s) VXGI_FETCH_FACING(Mip, c, mip, r, s)
+#endif
+
 VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
   vxgiFetches += VXGI_FETCHES_PER_SAMPLE;
   vec3 c = vxgiClipCoord(p, level);
   VxgiSample s;
-  VXGI_FETCH_FACING(Clip, c, 0.0, r, s)
+  VXGI_FETCH_FACING_CLIP(c, r, s)
   return s;
 }
 
 VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
-  vxgiFetches += VXGI_FETCHES_PER_SAMPLE;
+  vxgiFetches += VXGI_SIGNS * VXGI_FETCHES_PER_SAMPLE;  // both signs in the pyramid
   vec3 c = vxgiMipCoord(p);
   VxgiSample s;
-  VXGI_FETCH_FACING(Mip, c, mip, r, s)
+  VXGI_FETCH_FACING_MIP(c, mip, r, s)
   return s;
 }
 
