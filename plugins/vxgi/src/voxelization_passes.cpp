@@ -360,9 +360,10 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         const VkImage image = ctx.image(h).handle();
         const VkImageLayout layout = ctx.layout(h);
         vkCmdCopyImage(ctx.cmd(), image, layout, image, layout, uint32_t(slices.size()), slices.data());
-        // The row copies read the guard slice just written.
+        // The row copies read the guard slice just written and write its corner row again.
         gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+                           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                           VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
         vkCmdCopyImage(ctx.cmd(), image, layout, image, layout, uint32_t(rowCopies.size()), rowCopies.data());
         ctx.addWork(WorkUnit::ImageBytes, 2u * texelBytes * uint64_t(n) *
                                               (uint64_t(height) + uint64_t(rows) * format.stackedSigns()) *
