@@ -192,10 +192,10 @@ void Viewer::reportFrameRun() {
   frameRun_.reset();
 }
 
-uint64_t Viewer::refinementState(const FrameView& view, uint32_t factor) const {
-  // Anything that changes the image: the view (camera, size), the factor, the scene and
-  // every setting. Hashing the settings' values each frame costs microseconds.
-  std::string key = fmt::format("{} {} {} {}", view.width, view.height, factor, engine_->scene()->revision());
+uint64_t Viewer::refinementState(const FrameView& view) const {
+  // Anything that changes the image: the view (camera, size), the scene and every
+  // setting. Hashing the settings' values each frame costs microseconds.
+  std::string key = fmt::format("{} {} {}", view.width, view.height, engine_->scene()->revision());
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) key += fmt::format(" {} {}", view.view[c][r], view.projection[c][r]);
   for (const CVar* cvar : engine_->cvars().list()) key += cvar->valueText();
@@ -429,12 +429,22 @@ void Viewer::renderAndPresent() {
   // into the full-resolution image (progressive_refinement.h). The UI draws at window
   // resolution on top.
   const float percent = nextScreenPercentage();
-  const uint32_t factor = std::clamp(uint32_t(std::lround(100.0f / std::max(percent, 1.0f))), 1u, 16u);
+  uint32_t factor = std::clamp(uint32_t(std::lround(100.0f / std::max(percent, 1.0f))), 1u, 16u);
   const FrameView full = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
-  const uint64_t state = refinementState(full, factor);
+  const uint64_t state = refinementState(full);
   if (state != refinementState_) {
     refinement_.reset(rect.extent.width, rect.extent.height, factor);
     refinementState_ = state;
+  } else if (factor != refinement_.factor()) {
+    // A still view keeps its factor (a new one starts the refinement over, and the frames'
+    // cost does not change while nothing moves) unless its frames are far from the budget:
+    // the first frames of a scene are slow, and the factor picked then must not stick.
+    const float budget = engine_->rendererSettings().dynamicResFrameTimeBudgetMs.get();
+    const bool farOff = wallFrameMs_ > 1.5f * budget || wallFrameMs_ < 0.5f * budget;
+    if (farOff)
+      refinement_.reset(rect.extent.width, rect.extent.height, factor);
+    else
+      factor = refinement_.factor();
   }
   FrameOutputs outputs;
   outputs.display = true;

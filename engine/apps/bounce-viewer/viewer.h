@@ -141,7 +141,7 @@ class Viewer {
   ProgressiveRefinement refinement_;
   uint64_t refinementState_ = 0;  ///< refinementState() of the frames being refined
   /// A fingerprint of what the refined image depends on; a change starts it over.
-  uint64_t refinementState(const FrameView& view, uint32_t factor) const;
+  uint64_t refinementState(const FrameView& view) const;
   float wallFrameMs_ = 0.0f;
   std::chrono::steady_clock::time_point lastPresent_{};
   // A `frames N` run being measured: frames left and when it started.
