@@ -40,6 +40,7 @@ FrameView refinementView(const FrameView& full, uint32_t factor, glm::uvec2 jitt
     toLow[3][axis] = -b / a;  // applied to clip space: x_low = (x − b·w_clip) / a
   }
   v.projection = toLow * full.projection;
+  v.renderScale = full.renderScale / float(factor);
   v.viewProjection = v.projection * v.view;
   v.inverseViewProjection = glm::inverse(v.viewProjection);
   return v;

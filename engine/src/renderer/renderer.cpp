@@ -46,6 +46,7 @@ FrameView renderView(const FrameView& output, float percent) {
   const float scale = std::clamp(percent, 1.0f, 400.0f) / 100.0f;
   v.width = std::max(1u, uint32_t(std::lround(float(output.width) * scale)));
   v.height = std::max(1u, uint32_t(std::lround(float(output.height) * scale)));
+  v.renderScale = output.renderScale * float(v.width) / float(output.width);
   return v;
 }
 

@@ -53,6 +53,14 @@ struct GBufferInputs {
 int32_t checkedSparsity(int32_t sparsity) { return sparsity == 2 || sparsity == 4 ? sparsity : 1; }
 int32_t checkedCones(int32_t cones) { return std::clamp(cones, 1, 32); }
 
+// Every k-th output pixel in render pixels: k × scale, rounded down to 1, 2 or 4 (2% of
+// slack: a render size rounded to whole pixels gives a scale a hair off 1/2 or 1/4).
+int32_t effectiveSparsity(int32_t k, float renderScale) {
+  const float scale = std::isfinite(renderScale) ? std::clamp(renderScale, 0.0f, 1.0f) : 1.0f;
+  const float inRender = float(k) * scale * 1.02f;
+  return inRender >= 4.0f ? 4 : inRender >= 2.0f ? 2 : 1;
+}
+
 }  // namespace
 
 void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& s,
@@ -62,7 +70,11 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
   TracingPush push{};
   push.inverseViewProjection = frame.view.inverseViewProjection;
   push.cameraPosition = glm::vec4(frame.view.position, 1.0f);
-  const int32_t sparsity = checkedSparsity(frame.setting(s.diffuseSparsity));
+  // r.VXGI.DiffuseSparsity counts output pixels: a frame rendered at 1/4 of what is shown
+  // traces every render pixel for k = 2 or 4, so the image it converges to (the viewer's
+  // refinement, temporal filter) does not depend on the render's size.
+  const int32_t sparsity =
+      effectiveSparsity(checkedSparsity(frame.setting(s.diffuseSparsity)), frame.view.renderScale);
   push.sizes = glm::ivec4(int32_t(frame.view.width), int32_t(frame.view.height), sparsity,
                           checkedCones(frame.setting(s.diffuseCones)));
   push.tracing = glm::vec4(frame.setting(s.diffuseIntensity), frame.setting(s.tracingStep),

@@ -166,13 +166,16 @@ void VxgiSettings::declare(PluginContext& ctx) {
                             .outOfRange = RangePolicy::Clamp,
                             .postProcess = "VxgiDiffuseCones",
                             .category = tracing});
-  diffuseSparsity = ctx.addCVar<int32_t>({.name = "r.VXGI.DiffuseSparsity",
-                                          .defaultValue = 2,
-                                          .help = "Sparse diffuse tracing: trace every k-th pixel in x and "
-                                                  "y, then interpolate edge-aware (1, 2, 4).",
-                                          .allowed = {1, 2, 4},
-                                          .postProcess = "VxgiDiffuseSparsity",
-                                          .category = tracing});
+  diffuseSparsity =
+      ctx.addCVar<int32_t>({.name = "r.VXGI.DiffuseSparsity",
+                            .defaultValue = 2,
+                            .help = "Sparse diffuse tracing: trace every k-th output pixel in x "
+                                    "and y, then interpolate edge-aware (1, 2, 4); a frame "
+                                    "rendered below the output's size (r.ScreenPercentage) "
+                                    "traces every k × scale-th of its pixels.",
+                            .allowed = {1, 2, 4},
+                            .postProcess = "VxgiDiffuseSparsity",
+                            .category = tracing});
   temporalFilter = ctx.addCVar<bool>(
       {.name = "r.VXGI.TemporalFilter",
        .defaultValue = true,

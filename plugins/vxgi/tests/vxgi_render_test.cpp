@@ -207,6 +207,20 @@ TEST_F(VxgiRender, SparseTracingStaysCloseToTracingEveryPixel) {
   }
 }
 
+TEST_F(VxgiRender, SparsityCountsOutputPixelsSoASmallerRenderTracesMoreOfItsPixels) {
+  // r.VXGI.DiffuseSparsity 2 traces every 2nd output pixel: at r.ScreenPercentage 50 that
+  // is every render pixel (no interpolation pass), at 100 every 2nd (interpolated).
+  start("content/cornell_box.gltf", with(kSmall, {"r.VXGI.DiffuseSparsity=2"}), "VXGI");
+  EXPECT_TRUE(render(64, 64, {}).graph.executed("VXGI.DiffuseInterpolation"));
+  engine->console().execute("r.ScreenPercentage 50");
+  const RenderedFrame half = render(64, 64, {"indirect-irradiance"});
+  EXPECT_FALSE(half.graph.executed("VXGI.DiffuseInterpolation"));
+  EXPECT_TRUE(half.graph.executed("VXGI.DiffuseTracing"));
+  EXPECT_EQ(half.images.at("indirect-irradiance").width, 64u);  // upscaled to the output
+  engine->console().execute("r.VXGI.DiffuseSparsity 4");
+  EXPECT_TRUE(render(64, 64, {}).graph.executed("VXGI.DiffuseInterpolation"));  // every 2nd render pixel
+}
+
 TEST_F(VxgiRender, TemporalFilterReachesEveryPixelTracingOnAStillViewAndRejectsStaleHistory) {
   // r.VXGI.TemporalFilter: sparse tracing (k = 2) moves its samples through the k² = 4
   // pixels of each cell, one phase per frame, and keeps every pixel's exactly traced value.

@@ -22,6 +22,11 @@ struct FrameView {
   glm::mat4 viewProjection{1.0f};
   glm::mat4 inverseViewProjection{1.0f};
   glm::vec3 position{0.0f};
+  /// Render pixels per output pixel along each axis: below 1 when the frame renders at a
+  /// fraction of what is shown (r.ScreenPercentage, the viewer's dynamic resolution). A
+  /// technique whose quality settings count output pixels (trace every k-th one) divides by
+  /// it, so the image it converges to does not depend on the render's size.
+  float renderScale = 1.0f;
 
   static FrameView fromCamera(const Camera& camera, uint32_t width, uint32_t height);
 };
