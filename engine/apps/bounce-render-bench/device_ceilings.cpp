@@ -24,6 +24,15 @@ void push(VkCommandBuffer cmd, const gpu::Pipeline& p, const T& value) {
   vkCmdPushConstants(cmd, p.layout(), p.stages(), 0, sizeof(T), &value);
 }
 
+// A copy run reads and writes what the previous run (or the set-up) wrote: wait for it,
+// then bind the pipeline.
+void bindAfterPreviousRun(VkCommandBuffer cmd, const gpu::Pipeline& p) {
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+  vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
+}
+
 double fmaFlopsPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines, const TimedDispatch& timer,
                          int runs) {
   constexpr uint32_t kInvocations = 1u << 17, kTrips = 64;
@@ -60,10 +69,7 @@ double bufferBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipel
   const uint32_t count = uint32_t(kBytes / 16);
   const double s = timer.medianSeconds(
       [&](VkCommandBuffer cmd) {
-        gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-        vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
+        bindAfterPreviousRun(cmd, p);
         gpu::DescriptorWrites(p)
             .buffer("Source", source.handle())
             .buffer("Destination", destination.handle())
@@ -107,10 +113,7 @@ double imageBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipeli
   const auto local = p.localSize();
   const double s = timer.medianSeconds(
       [&](VkCommandBuffer cmd) {
-        gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-        vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
+        bindAfterPreviousRun(cmd, p);
         gpu::DescriptorWrites(p)
             .storageImage("source", source.view())
             .storageImage("destination", destination.view())

@@ -1,5 +1,7 @@
 #include "progressive_refinement.h"
 
+#include "image/image_resample.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -59,9 +61,11 @@ glm::uvec2 ProgressiveRefinement::nextJitter() const { return jitterAt(frames_, 
 
 const ImageBuffer& ProgressiveRefinement::add(const ImageBuffer& frame) {
   const uint32_t c = std::max(1u, frame.channels);
-  if (shown_.width != width_ || shown_.height != height_ || shown_.channels != c)
-    shown_ = ImageBuffer(width_, height_, c, 0.0f);
-  if (frame.empty()) return shown_;
+  if (frame.empty()) {
+    if (shown_.width != width_ || shown_.height != height_ || shown_.channels != c)
+      shown_ = ImageBuffer(width_, height_, c, 0.0f);
+    return shown_;
+  }
   const bool fits =
       frame.width == lowResolution(width_, factor_) && frame.height == lowResolution(height_, factor_);
   const glm::uvec2 j = fits ? nextJitter() : glm::uvec2(factor_ / 2);
@@ -77,29 +81,12 @@ const ImageBuffer& ProgressiveRefinement::add(const ImageBuffer& frame) {
     ++frames_;
   }
   // The rest: the latest frame, bilinear between its pixel centres, which sit on the
-  // viewport's pixels x·factor + j.
-  const float scale = 1.0f / float(factor_);
-  for (uint32_t Y = 0; Y < height_; ++Y) {
-    const float v = std::clamp((float(Y) - float(j.y)) * scale, 0.0f, float(frame.height - 1));
-    const uint32_t y0 = uint32_t(v), y1 = std::min(y0 + 1, frame.height - 1);
-    const float ty = v - float(y0);
-    for (uint32_t X = 0; X < width_; ++X) {
-      float* out = &shown_.pixels[(size_t(Y) * width_ + X) * c];
-      if (fits && known_[size_t(Y) * width_ + X]) {
-        const float* e = &exact_.pixels[(size_t(Y) * width_ + X) * c];
-        std::copy(e, e + c, out);
-        continue;
-      }
-      const float u = std::clamp((float(X) - float(j.x)) * scale, 0.0f, float(frame.width - 1));
-      const uint32_t x0 = uint32_t(u), x1 = std::min(x0 + 1, frame.width - 1);
-      const float tx = u - float(x0);
-      for (uint32_t k = 0; k < c; ++k) {
-        const float top = frame.at(x0, y0, k) + (frame.at(x1, y0, k) - frame.at(x0, y0, k)) * tx;
-        const float bottom = frame.at(x0, y1, k) + (frame.at(x1, y1, k) - frame.at(x0, y1, k)) * tx;
-        out[k] = top + (bottom - top) * ty;
-      }
-    }
-  }
+  // viewport's pixels x·factor + j; rendered pixels are exact.
+  const float step = 1.0f / float(factor_);
+  shown_ = resampleBilinear(frame, width_, height_, -glm::vec2(j) * step, glm::vec2(step));
+  if (fits)
+    for (size_t i = 0; i < known_.size(); ++i)
+      if (known_[i]) std::copy_n(&exact_.pixels[i * c], c, &shown_.pixels[i * c]);
   return shown_;
 }
 

@@ -14,12 +14,10 @@ struct Tap {
   float t = 0.0f;
 };
 
-std::vector<Tap> taps(uint32_t sourceSize, uint32_t outputSize) {
+std::vector<Tap> taps(uint32_t sourceSize, uint32_t outputSize, float start, float step) {
   std::vector<Tap> out(outputSize);
-  const float scale = float(sourceSize) / float(outputSize);
   for (uint32_t i = 0; i < outputSize; ++i) {
-    // The output pixel centre in source pixels, measured from the first source centre.
-    const float x = std::clamp((float(i) + 0.5f) * scale - 0.5f, 0.0f, float(sourceSize - 1));
+    const float x = std::clamp(start + float(i) * step, 0.0f, float(sourceSize - 1));
     const float lo = std::floor(x);
     out[i].lo = uint32_t(lo);
     out[i].hi = std::min(out[i].lo + 1, sourceSize - 1);
@@ -33,8 +31,17 @@ std::vector<Tap> taps(uint32_t sourceSize, uint32_t outputSize) {
 ImageBuffer resampleBilinear(const ImageBuffer& source, uint32_t width, uint32_t height) {
   if (source.empty() || width == 0 || height == 0) return {};
   if (source.width == width && source.height == height) return source;
+  // The output pixel centre in source pixels, measured from the first source centre.
+  const glm::vec2 step(float(source.width) / float(width), float(source.height) / float(height));
+  return resampleBilinear(source, width, height, 0.5f * step - 0.5f, step);
+}
+
+ImageBuffer resampleBilinear(const ImageBuffer& source, uint32_t width, uint32_t height, glm::vec2 start,
+                             glm::vec2 step) {
+  if (source.empty() || width == 0 || height == 0) return {};
   ImageBuffer out(width, height, source.channels, 0.0f);
-  const std::vector<Tap> xs = taps(source.width, width), ys = taps(source.height, height);
+  const std::vector<Tap> xs = taps(source.width, width, start.x, step.x),
+                         ys = taps(source.height, height, start.y, step.y);
   const uint32_t c = source.channels;
   for (uint32_t y = 0; y < height; ++y) {
     const Tap ty = ys[y];

@@ -2,6 +2,7 @@
 
 #include "convergence.h"
 
+#include <bounce/core/value_hash.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -47,8 +48,8 @@ Lighting decideLighting(const Scene& scene, const DdgiSettings& settings) {
 // hysteresis as this volume and the post-process volumes set them. A change restarts the
 // updates.
 uint64_t ProbeVolume::contentKey(const FrameContext& frame, const VolumeConstants& c) const {
-  uint64_t key = 1469598103934665603ull;  // FNV-1a offset basis
-  auto mix = [&key](auto value) { key = (key ^ std::hash<decltype(value)>{}(value)) * 1099511628211ull; };
+  ValueHash key;  // what the cached work depends on
+  auto mix = [&key](const auto& value) { key.add(value); };
   mix(static_cast<const void*>(&frame.scene));
   for (SceneChange kind :
        {SceneChange::Geometry, SceneChange::Transform, SceneChange::Material, SceneChange::Light})
@@ -65,7 +66,7 @@ uint64_t ProbeVolume::contentKey(const FrameContext& frame, const VolumeConstant
   mix(c.bias.y);
   mix(c.blend.x);
   mix(c.texels.z);
-  return key;
+  return key.value();
 }
 
 VolumePlan ProbeVolume::plan(const FrameContext& frame, const VolumeSpec& spec, const DdgiSettings& settings,

@@ -3,6 +3,7 @@
 #include <bounce/gpu/pass_context.h>
 #include <bounce/graph/channels.h>
 
+#include <bounce/core/value_hash.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -85,12 +86,12 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
   // Temporal filter: sparse diffuse light (not ambient occlusion) with a history to keep.
   std::optional<TemporalHistory::Frame> temporal;
   if (history && sparsity > 1 && !ao && s.temporalFilter.get()) {
-    uint64_t key = 1469598103934665603ull;  // FNV-1a over what the traced values depend on
-    auto mix = [&key](auto value) { key = (key ^ std::hash<decltype(value)>{}(value)) * 1099511628211ull; };
+    ValueHash key;  // what the cached work depends on
+    auto mix = [&key](const auto& value) { key.add(value); };
     for (float v : {push.tracing.x, push.tracing.y, push.tracing.z, push.tracing.w, push.extra.x}) mix(v);
     mix(push.sizes.z);
     mix(push.sizes.w);
-    temporal = history->begin(graph, frame.view, uint32_t(sparsity), key, voxelsChanged);
+    temporal = history->begin(graph, frame.view, uint32_t(sparsity), key.value(), voxelsChanged);
     push.extra.w = float(temporal->phase);
   }
   const bool diffuseOn = s.diffuseEnable.get();

@@ -18,6 +18,7 @@
 #include <bounce/plugin/plugin.h>
 #include <bounce/plugin/plugin_context.h>
 
+#include <bounce/core/value_hash.h>
 #include <fmt/format.h>
 
 #include <functional>
@@ -70,8 +71,8 @@ class VxgiPlugin final : public Plugin {
   // Everything besides placement that changes what the voxels hold, hashed (it is
   // compared every frame; a change re-voxelizes the whole clip-map).
   uint64_t settingsKey(const FrameContext& frame) const {
-    uint64_t key = 1469598103934665603ull;  // FNV-1a offset basis
-    auto mix = [&key](auto value) { key = (key ^ std::hash<decltype(value)>{}(value)) * 1099511628211ull; };
+    ValueHash key;  // what the cached work depends on
+    auto mix = [&key](const auto& value) { key.add(value); };
     mix(settings_.emittanceStorageScale.get());
     mix(frame.setting(settings_.emittanceAmbient));
     mix(settings_.testCube.get());
@@ -83,7 +84,7 @@ class VxgiPlugin final : public Plugin {
       mix(settings_.omniDirectional.of(m));
     }
     for (const Light& l : frame.scene.lights()) mix(settings_.indirectLighting.of(l));
-    return key;
+    return key.value();
   }
 
   void voxelization(RenderGraph& graph, const FrameContext& frame) {
