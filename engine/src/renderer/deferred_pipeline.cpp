@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bounce {
@@ -292,7 +293,11 @@ void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) co
   TextureHandle bloomTexture;
   g.addPass("Bloom", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     TextureHandle hdr = b.read(bb.texture(channels::SceneColor), Access::Sampled);
-    TextureDesc desc = TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, 0.5f);
+    // The chain starts at half the *output* size, not the render's: bloom's radius is then
+    // the same fraction of the image whatever r.ScreenPercentage or dynamic resolution
+    // render at (a 10% render would otherwise bloom ten times wider once upscaled).
+    const float outputScale = 0.5f / std::clamp(frame.view.renderScale, 1e-3f, 1.0f);
+    TextureDesc desc = TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, outputScale);
     desc.mips = kBloomMips;
     bloomTexture = b.write(b.createTexture("Bloom", desc), Access::StorageReadWrite);
     b.read(bloomTexture, Access::Sampled);  // each step samples the mip the previous one wrote

@@ -1,5 +1,5 @@
 #version 460
-// Bloom on a half-resolution mip chain, one dispatch per step:
+// Bloom on a mip chain from half the output resolution, one dispatch per step:
 //   mode 0: bright-pass filter the HDR image into mip 0 (13-tap downsample, Jimenez 2014)
 //   mode 1: downsample mip i−1 into mip i (same filter)
 //   mode 2: upsample mip i+1 with a 3×3 tent and add it to mip i
@@ -40,7 +40,11 @@ void main() {
   vec2 texel = 1.0 / vec2(textureSize(source, 0));
   vec3 c;
   if (pc.mode == 0u) {
-    c = downsample13(uv, texel) * pc.exposure;
+    // Mip 0 is half the output size; its taps are output pixels apart even when the HDR
+    // image is a smaller render (then they interpolate it bilinearly). At full resolution
+    // 2·size − 1 ≤ the source size, so the taps are its texels, as before.
+    vec2 outputTexel = 1.0 / max(vec2(textureSize(source, 0)), vec2(2u * pc.size - 1u));
+    c = downsample13(uv, outputTexel) * pc.exposure;
     // Soft knee: only light above the threshold blooms, without a hard edge.
     float l = luminance(c);
     float knee = max(pc.threshold * 0.5, 1e-4);
