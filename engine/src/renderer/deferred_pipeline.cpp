@@ -37,7 +37,8 @@ struct BloomPush {
 
 struct TonemapPush {
   uint32_t width, height, op, hasBloom;
-  float exposure, bloomIntensity;
+  float exposure, bloomIntensity, bloomThreshold;
+  float bloomSkippedLevels;  ///< levels of the output's chain finer than the render
 };
 
 // Copies vkCmdUpdateBuffer can take: 64 KiB per call, in multiples of 4 bytes.
@@ -290,15 +291,21 @@ void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) co
   const float threshold = frame.setting(settings_.bloomThreshold);
   const float exposure = std::exp2(frame.setting(settings_.exposure));
   const uint32_t width = frame.view.width, height = frame.view.height;
+  // The chain is the one a full-resolution render would have, from half the *output*
+  // size: bloom's radius is then the same fraction of the image whatever
+  // r.ScreenPercentage or dynamic resolution render at (a 10% render would otherwise
+  // bloom ten times wider once upscaled). Its levels finer than the render would hold
+  // the bright light blurred by less than a render pixel: a small render skips them (at
+  // 10% they were 3/4 of bloom's cost) and tonemap adds each one's share per pixel.
+  const float renderScale = std::clamp(frame.view.renderScale, 1e-3f, 1.0f);
+  const uint32_t skipped =
+      std::min(kBloomMips - 2, uint32_t(std::max(0.0f, std::floor(std::log2(0.5f / renderScale)))));
   TextureHandle bloomTexture;
   g.addPass("Bloom", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     TextureHandle hdr = b.read(bb.texture(channels::SceneColor), Access::Sampled);
-    // The chain starts at half the *output* size, not the render's: bloom's radius is then
-    // the same fraction of the image whatever r.ScreenPercentage or dynamic resolution
-    // render at (a 10% render would otherwise bloom ten times wider once upscaled).
-    const float outputScale = 0.5f / std::clamp(frame.view.renderScale, 1e-3f, 1.0f);
-    TextureDesc desc = TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, outputScale);
-    desc.mips = kBloomMips;
+    TextureDesc desc =
+        TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, 0.5f / renderScale / float(1u << skipped));
+    desc.mips = kBloomMips - skipped;
     bloomTexture = b.write(b.createTexture("Bloom", desc), Access::StorageReadWrite);
     b.read(bloomTexture, Access::Sampled);  // each step samples the mip the previous one wrote
     b.condition([bloom] {
@@ -344,7 +351,8 @@ void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) co
     bb.setTexture(channels::SceneColorLdr, ldr);
     return [=](PassContext& ctx) {
       const bool hasBloom = ctx.available(bloomIn);
-      TonemapPush p{width, height, uint32_t(op), hasBloom ? 1u : 0u, exposure, bloom};
+      TonemapPush p{width,    height, uint32_t(op), hasBloom ? 1u : 0u,
+                    exposure, bloom,  threshold,    float(skipped)};
       gpu::Bindings bind;
       bind.texture("hdr", hdr, gpu::SamplerKind::NearestClamp).texture("bloom", bloomIn).storage("ldr", ldr);
       ctx.dispatchThreads(ctx.pipelines().compute(shader("tonemap.comp")), bind, {width, height, 1}, p);
