@@ -5,6 +5,7 @@
 #include "bounce/gpu/pass_context.h"
 #include "bounce/graph/channels.h"
 #include "renderer/light_setup.h"
+#include "renderer/shadow_map_cache.h"
 
 #include <fmt/format.h>
 
@@ -54,7 +55,7 @@ constexpr uint32_t kBloomMips = 5;
 
 DeferredPipeline::DeferredPipeline(const RendererSettings& settings, const AovRegistry& aovs,
                                    const gpu::Device* device)
-    : settings_(settings), aovs_(aovs), device_(device) {
+    : settings_(settings), aovs_(aovs), device_(device), shadowCache_(std::make_unique<ShadowMapCache>()) {
   if (!device) return;
   // What the lighting pass samples as shadow maps when no light casts shadows (the
   // flag tells it to ignore them, but the binding must still be a depth array).
@@ -118,22 +119,34 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
 
   const uint32_t layers = lights->shadowLayers();
   const float slopeBias = settings_.shadowDepthBias.get();
+  // Without shadow-casting lights the maps are one cleared 1×1 layer (depth 1: lit), so a
+  // reader always binds a depth array, whatever the scene.
+  const TextureDesc desc{.type = TextureType::Tex2DArray,
+                         .format = VK_FORMAT_D32_SFLOAT,
+                         .width = layers ? mapSize : 1u,
+                         .height = layers ? mapSize : 1u,
+                         .layers = std::max(1u, layers)};
+  ShadowMapCache& cache = *shadowCache_;
+  const uint64_t key = ShadowMapCache::key(frame.scene, lights->shadowMatrices, mapSize, slopeBias);
+  TextureHandle maps = g.importTexture(cache.maps(desc));  // first: a new size re-creates them
+  const bool cached = settings_.cacheShadowMaps.get() && cache.holds(key);
+  const uint64_t frameIndex = frame.frameIndex;
+  bb.setTexture(channels::ShadowMaps, maps);
   g.addPass("ShadowMaps", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
-    // Without shadow-casting lights the maps are one cleared 1×1 layer (depth 1: lit),
-    // so a reader always binds a depth array, whatever the scene.
-    TextureDesc desc{.type = TextureType::Tex2DArray,
-                     .format = VK_FORMAT_D32_SFLOAT,
-                     .width = layers ? mapSize : 1u,
-                     .height = layers ? mapSize : 1u,
-                     .layers = std::max(1u, layers)};
-    TextureHandle maps =
-        b.write(b.createTexture(std::string(channels::ShadowMaps), desc), Access::DepthAttachment);
+    maps = b.write(maps, Access::DepthAttachment);
     bb.setTexture(channels::ShadowMaps, maps);
-    b.condition([layers] {
+    const uint64_t drawnAt = cache.drawnAt();
+    b.condition([layers, cached, drawnAt] {
+      if (cached)
+        return PassDecision::skip(fmt::format(
+            "shadow maps unchanged since frame {} (static geometry, still lights; r.Shadow.CacheStaticMaps)",
+            drawnAt));
       return PassDecision::run(layers ? fmt::format("{} shadow-map layers", layers)
                                       : std::string("no shadow-casting lights: one cleared 1×1 layer"));
     });
+    ShadowMapCache* drawn = &cache;
     return [=](PassContext& ctx) {
+      drawn->drawn(key, frameIndex);
       if (layers == 0) {
         ctx.beginRendering({.depth = DepthTarget{maps, 1.0f}, .layer = 0u});
         ctx.endRendering();
