@@ -1,0 +1,77 @@
+#version 460
+// VPL.Gather: the indirect irradiance at every G-buffer pixel from the VPL list,
+//   E = Σ Φ/π · cos θ_vpl · cos θ_pixel / max(d², c²) · V,
+// V a shadow ray against the scene's BVH, c the clamp distance (r.VPL.Clamp × cell; 0:
+// off). Published as the IndirectDiffuse channel (the composite adds albedo/π × E).
+#define RAY_TRACING_BINDING 0
+#include "bounce/ray_tracing.glsl"
+#include "bounce/gbuffer.glsl"
+#include "vpl/common.glsl"
+#define WORK_COUNTERS_BINDING 9
+#include "bounce/work_counters.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std430, binding = 5) readonly buffer VplLights {
+  uvec4 vplHeader;
+  VplLight vplLights[];
+};
+layout(binding = 6) uniform sampler2D gDepth;
+layout(binding = 7) uniform sampler2D gNormalRoughness;
+layout(binding = 8, rgba16f) uniform writeonly image2D outIrradiance;
+
+layout(push_constant) uniform Push {
+  mat4 inverseViewProjection;
+  vec4 cameraClamp;  // xyz: camera position, w: clamp distance² (m²; 0: off)
+  uvec4 size;        // xy: view size, z: VPLs the list's buffer holds
+  vec4 params;       // x: intensity, y: how far short of a VPL its shadow ray stops (m)
+};
+
+// (0.1 mm)²: nearer than this the direction from the pixel to the VPL is rounding noise
+// (positions from a 32-bit depth are good to ~1e-4 of their distance) and the term is the
+// singularity itself, which an unclamped estimator cannot evaluate: such a VPL is skipped.
+const float VPL_MIN_DISTANCE2 = 1e-8;
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (p.x >= int(size.x) || p.y >= int(size.y)) return;
+  float depth = texelFetch(gDepth, p, 0).r;
+  if (isBackground(depth)) {
+    imageStore(outIrradiance, p, vec4(0.0));
+    return;
+  }
+  vec2 uv = (vec2(p) + 0.5) / vec2(size.xy);
+  vec3 P = worldPositionFromDepth(uv, depth, inverseViewProjection);
+  vec3 N = safeNormalize(texelFetch(gNormalRoughness, p, 0).xyz, vec3(0.0, 1.0, 0.0));
+  // Shadow rays start above the depth's precision (as the engine's AO example): the
+  // reconstructed point is off by ~1e-4 of its distance, 1e-3 leaves a factor 10.
+  float offset = 1e-3 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
+  vec3 origin = P + N * offset;
+  vec3 E = vec3(0.0);
+  // Never past the buffer, whatever the header says (a list not yet generated).
+  uint count = min(vplHeader.x, size.z);
+  uint rays = 0u;
+  for (uint i = 0u; i < count; ++i) {
+    VplLight l = vplLights[i];
+    vec3 toLight = l.positionSlot.xyz - origin;
+    float d2 = dot(toLight, toLight);
+    if (!(d2 > VPL_MIN_DISTANCE2)) continue;  // also false for NaN
+    float d = sqrt(d2);
+    vec3 L = toLight / d;
+    float cosPixel = dot(N, L);
+    float cosVpl = -dot(l.normalCount.xyz, L);
+    // A VPL behind the pixel's surface, or a pixel behind the VPL's: no light, no ray.
+    if (cosPixel <= 0.0 || cosVpl <= 0.0) continue;
+    vec3 contribution = l.flux.rgb * (INV_PI * cosPixel * cosVpl / max(d2, cameraClamp.w));
+    // The shadow ray stops short of the VPL: a merged VPL is the mean of points on its
+    // surface and may sit a little inside a convex one.
+    float tMax = d - params.y;
+    if (tMax > 0.0) {
+      ++rays;
+      if (traceAnyHit(origin, L, 0.0, tMax)) continue;
+    }
+    E += contribution;
+  }
+  countWork(WORK_RAYS, rays);
+  imageStore(outIrradiance, p, vec4(sanitize(E * params.x, HALF_MAX), 1.0));
+}
