@@ -3,6 +3,14 @@
 //   E = Σ Φ/π · cos θ_vpl · cos θ_pixel / max(d², c²) · V,
 // V a shadow ray against the scene's BVH, c the clamp distance (r.VPL.Clamp × cell; 0:
 // off). Published as the IndirectDiffuse channel (the composite adds albedo/π × E).
+//
+// One dispatch per batch of VPL_BATCH lights, each adding to the running sum in the
+// RGBA32F target: llvmpipe (lavapipe) caps the iterations of a loop nest per invocation
+// at 65,535 (LP_MAX_TGSI_LOOP_ITERATIONS), counting the BVH traversal loops inside the
+// loop over lights, and then leaves the loops early with whatever they held. Seen here:
+// with 1,024 VPLs per invocation whole SIMD rows of pixels (8 lanes share the count)
+// reported shadow-ray hits inside an empty sphere and lost 28% of the light; with 512 none.
+// 64 lights leave each shadow ray about 1,000 traversal steps.
 #define RAY_TRACING_BINDING 0
 #include "bounce/ray_tracing.glsl"
 #include "bounce/gbuffer.glsl"
@@ -18,13 +26,14 @@ layout(std430, binding = 5) readonly buffer VplLights {
 };
 layout(binding = 6) uniform sampler2D gDepth;
 layout(binding = 7) uniform sampler2D gNormalRoughness;
-layout(binding = 8, rgba16f) uniform writeonly image2D outIrradiance;
+layout(binding = 8, rgba32f) uniform image2D outIrradiance;
 
 layout(push_constant) uniform Push {
   mat4 inverseViewProjection;
   vec4 cameraClamp;  // xyz: camera position, w: clamp distance² (m²; 0: off)
-  uvec4 size;        // xy: view size, z: VPLs the list's buffer holds
-  vec4 params;       // x: intensity, y: how far short of a VPL its shadow ray stops (m)
+  uvec4 size;        // xy: view size, z: VPLs the list's buffer holds, w: this batch's first VPL
+  vec4 params;       // x: intensity, y: how far short of a VPL its shadow ray stops (m), z: batch
+                     // size, w: 1 first batch (no sum to read) + 2 last batch (scale and sanitize)
 };
 
 // (0.1 mm)²: nearer than this the direction from the pixel to the VPL is rounding noise
@@ -35,11 +44,18 @@ const float VPL_MIN_DISTANCE2 = 1e-8;
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= int(size.x) || p.y >= int(size.y)) return;
+  uint flags = uint(params.w);
+  bool firstBatch = (flags & 1u) != 0u, lastBatch = (flags & 2u) != 0u;
+  // Never past the buffer, whatever the header says (a list not yet generated).
+  uint count = min(vplHeader.x, size.z);
+  uint begin = size.w, end = min(count, begin + uint(params.z));
   float depth = texelFetch(gDepth, p, 0).r;
   if (isBackground(depth)) {
-    imageStore(outIrradiance, p, vec4(0.0));
+    if (firstBatch) imageStore(outIrradiance, p, vec4(0.0));
     return;
   }
+  // Batches past the list's end change nothing (the CPU does not know its length).
+  if (begin >= end && !firstBatch && !lastBatch) return;
   vec2 uv = (vec2(p) + 0.5) / vec2(size.xy);
   vec3 P = worldPositionFromDepth(uv, depth, inverseViewProjection);
   vec3 N = safeNormalize(texelFetch(gNormalRoughness, p, 0).xyz, vec3(0.0, 1.0, 0.0));
@@ -47,11 +63,9 @@ void main() {
   // reconstructed point is off by ~1e-4 of its distance, 1e-3 leaves a factor 10.
   float offset = 1e-3 * max(1.0, max(abs(P.x), max(abs(P.y), abs(P.z))));
   vec3 origin = P + N * offset;
-  vec3 E = vec3(0.0);
-  // Never past the buffer, whatever the header says (a list not yet generated).
-  uint count = min(vplHeader.x, size.z);
+  vec3 E = firstBatch ? vec3(0.0) : imageLoad(outIrradiance, p).rgb;
   uint rays = 0u;
-  for (uint i = 0u; i < count; ++i) {
+  for (uint i = begin; i < end; ++i) {
     VplLight l = vplLights[i];
     vec3 toLight = l.positionSlot.xyz - origin;
     float d2 = dot(toLight, toLight);
@@ -73,5 +87,6 @@ void main() {
     E += contribution;
   }
   countWork(WORK_RAYS, rays);
-  imageStore(outIrradiance, p, vec4(sanitize(E * params.x, HALF_MAX), 1.0));
+  if (lastBatch) E = sanitize(E * params.x, HALF_MAX);
+  imageStore(outIrradiance, p, vec4(E, 1.0));
 }

@@ -1,5 +1,6 @@
 #include "vpl_passes.h"
 
+#include <bounce/gpu/barriers.h>
 #include <bounce/gpu/buffer.h>
 #include <bounce/gpu/pass_context.h>
 #include <bounce/graph/channels.h>
@@ -15,6 +16,8 @@ namespace bounce::vpl {
 namespace {
 
 constexpr const char* kShaders = "plugins/vpl/shaders/";
+// VPLs per gather dispatch (gather.comp: llvmpipe's loop-iteration cap).
+constexpr uint32_t kGatherBatch = 64;
 
 gpu::ShaderSource shader(const char* file, bool merge) {
   return {std::string(kShaders) + file, {{"VPL_MERGE", merge ? "1" : "0"}}};
@@ -127,14 +130,15 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
          // cell for a radius of one cell), and the receiver's own offset (1e-3) is smaller.
          glm::vec4(f.intensity, 0.05f * f.plan.grid.cell, 0.0f, 0.0f)};
   static_assert(sizeof(GatherPush) <= 128);
+  const uint32_t capacity = f.listCapacity;
   graph.addPass("VPL.Gather", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const RayTracingSceneHandles rt = readRayTracingScene(b, bb);
     const BufferHandle lights = b.read(list, Access::StorageRead);
     const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
     const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
     const TextureHandle out = b.write(
-        b.createTexture("VPL.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
-        Access::StorageWrite);
+        b.createTexture("VPL.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R32G32B32A32_SFLOAT)),
+        Access::StorageReadWrite);
     bb.setTexture(channels::IndirectDiffuse, out);
     b.condition(litCondition(f));
     return [=](PassContext& ctx) {
@@ -143,8 +147,21 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
       bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
           .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
           .storage("outIrradiance", out);
-      ctx.dispatchThreads(ctx.pipelines().compute({std::string(kShaders) + "gather.comp", {}}), bind,
-                          {push.size.x, push.size.y, 1}, push);
+      // Batches of kGatherBatch lights, each adding to the sum (gather.comp says why): as many
+      // as the list's capacity needs; those past its actual length return at once.
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute({std::string(kShaders) + "gather.comp", {}});
+      const uint32_t batches = std::max(1u, (capacity + kGatherBatch - 1) / kGatherBatch);
+      for (uint32_t i = 0; i < batches; ++i) {
+        GatherPush p = push;
+        p.size.w = i * kGatherBatch;
+        p.params.z = float(kGatherBatch);
+        p.params.w = float((i == 0 ? 1 : 0) + (i + 1 == batches ? 2 : 0));
+        if (i > 0)
+          gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        ctx.dispatchThreads(pipeline, bind, {p.size.x, p.size.y, 1}, p);
+      }
       // The shadow rays depend on the VPL list (on the GPU): the shader counts them.
       const gpu::Image& target = ctx.image(out);
       ctx.addWork(WorkUnit::ImageBytes, uint64_t(target.extent().width) * target.extent().height *
