@@ -32,7 +32,7 @@ layout(push_constant) uniform Push {
   mat4 inverseViewProjection;
   vec4 cameraClamp;  // xyz: camera position, w: clamp distance² (m²; 0: off)
   uvec4 size;        // xy: view size, z: VPLs the list's buffer holds, w: this batch's first VPL
-  vec4 params;       // x: intensity, y: how far short of a VPL its shadow ray stops (m), z: batch
+  vec4 params;       // x: intensity, y: how far off a VPL (along its normal) its shadow ray ends (m), z: batch
                      // size, w: 1 first batch (no sum to read) + 2 last batch (scale and sanitize)
 };
 
@@ -77,12 +77,19 @@ void main() {
     // A VPL behind the pixel's surface, or a pixel behind the VPL's: no light, no ray.
     if (cosPixel <= 0.0 || cosVpl <= 0.0) continue;
     vec3 contribution = l.flux.rgb * (INV_PI * cosPixel * cosVpl / max(d2, cameraClamp.w));
-    // The shadow ray stops short of the VPL: a merged VPL is the mean of points on its
-    // surface and may sit a little inside a convex one.
-    float tMax = d - params.y;
-    if (tMax > 0.0) {
+    // The shadow ray ends off the VPL, on the side it lights: a VPL inside geometry (a
+    // light path's hit on a wall face buried in another wall, a merged VPL averaged into a
+    // convex object) is then hidden by that geometry, and one on an open surface is not
+    // hidden by its own surface. Off by the larger of the pass's bias (5% of a cell when
+    // merged) and 1e-3 of the coordinates, as far as the pixel's own offset.
+    vec3 lp = abs(l.positionSlot.xyz);
+    float bias = max(params.y, 1e-3 * max(1.0, max(lp.x, max(lp.y, lp.z))));
+    vec3 toTarget = l.positionSlot.xyz + l.normalCount.xyz * bias - origin;
+    float tMax = length(toTarget);
+    // A target behind the pixel's surface: the VPL lies within the bias of it; unshadowed.
+    if (tMax > 0.0 && dot(toTarget, N) > 0.0) {
       ++rays;
-      if (traceAnyHit(origin, L, 0.0, tMax)) continue;
+      if (traceAnyHit(origin, toTarget / tMax, 0.0, tMax)) continue;
     }
     E += contribution;
   }

@@ -56,22 +56,29 @@ BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferH
   GridPush push{};
   push.counts = glm::uvec4(plan.paths, plan.bounces, uint32_t(plan.sources.size()), f.seed);
   push.grid = glm::vec4(plan.grid.origin, plan.grid.cell);
-  push.dims = glm::uvec4(plan.grid.dims, 0u);
+  push.dims = glm::uvec4(plan.grid.dims, plan.vplsPerPath);
   push.quant = glm::vec4(1.0f / plan.fluxQuantum, plan.fluxQuantum, 0.0f, 0.0f);
 
-  BufferHandle sources, cells;
+  BufferHandle sources, cells, emitters;
   graph.addPass("VPL.Setup", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     sources = b.write(
         b.createBuffer("VPL.Sources", {std::max<uint64_t>(plan.sources.size(), 1) * sizeof(VplSource)}),
+        Access::TransferDst);
+    emitters = b.write(
+        b.createBuffer("VPL.Emitters", {std::max<uint64_t>(plan.emitters.size(), 1) * sizeof(VplEmitter)}),
         Access::TransferDst);
     // Merged: the grid's sums start at zero. Unmerged: the trace writes every raw slot.
     if (merge)
       cells = b.write(b.createBuffer("VPL.Grid", {std::max<uint64_t>(slots, 1) * 48}), Access::TransferDst);
     addGenerationConditions(b, f);
     auto data = std::make_shared<std::vector<VplSource>>(plan.sources);
-    const BufferHandle s = sources, c = cells;
+    // Always one entry at least: the shader's buffer must be bound even with no emitter.
+    auto emitterData = std::make_shared<std::vector<VplEmitter>>(
+        plan.emitters.empty() ? std::vector<VplEmitter>(1) : plan.emitters);
+    const BufferHandle s = sources, c = cells, e = emitters;
     return [=](PassContext& ctx) {
       ctx.upload(s, data->data(), data->size() * sizeof(VplSource));
+      ctx.upload(e, emitterData->data(), emitterData->size() * sizeof(VplEmitter));
       if (merge) vkCmdFillBuffer(ctx.cmd(), ctx.buffer(c).handle(), 0, VK_WHOLE_SIZE, 0u);
     };
   });
@@ -80,6 +87,7 @@ BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferH
     const RayTracingSceneHandles rt = readRayTracingScene(b, bb);
     const SceneLightHandles lights = readSceneLights(b, bb);
     const BufferHandle s = b.read(sources, Access::StorageRead);
+    const BufferHandle e = b.read(emitters, Access::StorageRead);
     cells =
         merge ? b.write(cells, Access::StorageReadWrite)
               : b.write(b.createBuffer("VPL.Raw", {std::max<uint64_t>(slots, 1) * 48}), Access::StorageWrite);
@@ -89,6 +97,7 @@ BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferH
     return [=](PassContext& ctx) {
       gpu::Bindings bind;
       bindRayTracingScene(bind, rt).buffer("SceneLights", lights.lights).buffer("VplSources", s);
+      bind.buffer("VplEmitters", e);
       bind.buffer(merge ? "VplCells" : "VplRaw", c);
       ctx.dispatchThreads(ctx.pipelines().compute(shader("trace.comp", merge)), bind, {paths, 1, 1}, push);
       // The paths' first rays; the continuing bounces are counted by the shader.
@@ -125,10 +134,11 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
     glm::vec4 params;
   } push{frame.view.inverseViewProjection, glm::vec4(frame.view.position, clampDistance * clampDistance),
          glm::uvec4(frame.view.width, frame.view.height, f.listCapacity, 0u),
-         // Shadow rays stop 5% of a cell short of a VPL: a merged VPL is the mean of points
-         // on its surface, inside a convex one by at most the sagitta over a cell (3% of a
-         // cell for a radius of one cell), and the receiver's own offset (1e-3) is smaller.
-         glm::vec4(f.intensity, 0.05f * f.plan.grid.cell, 0.0f, 0.0f)};
+         // Shadow rays aim at a point this far off the VPL along its normal: merged, 5% of a
+         // cell, the sagitta over a cell of a convex surface of radius 2.5 cells (a merged VPL
+         // is the mean of points on its surface, inside a convex one by that much); unmerged,
+         // the shader's 1e-3 of the coordinates (the VPL is a hit point on its surface).
+         glm::vec4(f.intensity, f.plan.merge ? 0.05f * f.plan.grid.cell : 0.0f, 0.0f, 0.0f)};
   static_assert(sizeof(GatherPush) <= 128);
   const uint32_t capacity = f.listCapacity;
   graph.addPass("VPL.Gather", Queue::Compute, [&](PassBuilder& b) -> RecordFn {

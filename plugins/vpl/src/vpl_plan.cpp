@@ -40,7 +40,59 @@ float lightPower(const Light& l, float sceneRadius) {
   return 0.0f;
 }
 
-VplPlan planVpls(const Scene& scene, const std::vector<bool>& castsVpls, const PlanInput& in) {
+std::vector<VplEmitter> emissiveTriangles(const Scene& scene, double& power) {
+  std::vector<VplEmitter> out;
+  std::vector<double> weights;
+  power = 0.0;
+  for (const MeshInstance& inst : scene.instances()) {
+    if (inst.mesh >= scene.meshes().size()) continue;
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(inst.world)));
+    for (const MeshPrimitive& p : scene.meshes()[inst.mesh].primitives) {
+      if (p.material >= scene.materials().size()) continue;
+      const Material& m = scene.materials()[p.material];
+      const glm::vec3 e = m.emission();
+      const float peak = std::max({e.r, e.g, e.b});
+      if (!(peak > 0.0f) || !std::isfinite(peak)) continue;
+      for (size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+        const uint32_t i0 = p.indices[t], i1 = p.indices[t + 1], i2 = p.indices[t + 2];
+        if (std::max({i0, i1, i2}) >= p.positions.size()) continue;
+        const glm::vec3 a = glm::vec3(inst.world * glm::vec4(p.positions[i0], 1.0f));
+        const glm::vec3 b = glm::vec3(inst.world * glm::vec4(p.positions[i1], 1.0f));
+        const glm::vec3 c = glm::vec3(inst.world * glm::vec4(p.positions[i2], 1.0f));
+        const float area = 0.5f * glm::length(glm::cross(b - a, c - a));
+        // The front face as the ray tracer sees it: the object-space winding's normal
+        // carried by the inverse transpose (mirroring transforms keep their front side).
+        const glm::vec3 objectNormal =
+            glm::cross(p.positions[i1] - p.positions[i0], p.positions[i2] - p.positions[i0]);
+        const glm::vec3 n = normalMatrix * objectNormal;
+        if (!(area > 0.0f) || !std::isfinite(area) || !(glm::dot(n, n) > 0.0f)) continue;
+        VplEmitter em;
+        em.v0 = glm::vec4(a, glm::uintBitsToFloat(p.material));
+        em.v1 = glm::vec4(b, m.doubleSided ? 1.0f : 0.0f);
+        em.v2 = glm::vec4(c, 0.0f);
+        em.normal = glm::vec4(glm::normalize(n), 0.0f);
+        const double w = double(area) * peak * (m.doubleSided ? 2.0 : 1.0);
+        power += kPi * w;
+        weights.push_back(w);
+        em.weight.x = area;
+        out.push_back(em);
+      }
+    }
+  }
+  const double total = std::accumulate(weights.begin(), weights.end(), 0.0);
+  double cumulative = 0.0;
+  for (size_t i = 0; i < out.size(); ++i) {
+    const double p = weights[i] / total;
+    cumulative += p;
+    out[i].normal.w = float(cumulative);
+    out[i].weight.x = float(double(out[i].weight.x) / p);
+  }
+  if (!out.empty()) out.back().normal.w = 1.0f;  // the search never runs off the end
+  return out;
+}
+
+VplPlan planVpls(const Scene& scene, const std::vector<bool>& castsVpls, const PlanInput& in,
+                 const std::vector<VplEmitter>& emitters, double emitterPower) {
   VplPlan plan;
   plan.bounces = std::max(in.bounces, 1u);
   plan.merge = in.merge;
@@ -66,11 +118,15 @@ VplPlan planVpls(const Scene& scene, const std::vector<bool>& castsVpls, const P
     ++flagged;
     power[i] = lightPower(scene.lights()[i], radius);
   }
+  // Emissive surfaces share the paths as one more "light".
+  const bool emissive = in.emissive && !emitters.empty() && emitterPower > 0.0;
+  if (emissive) power.push_back(float(emitterPower));
   const double total = std::accumulate(power.begin(), power.end(), 0.0);
   plan.totalPower = float(total);
   if (!(total > 0.0)) {
-    plan.reason = flagged == 0 ? "no light casts VPLs (light parameter CastsVpls)"
+    plan.reason = flagged == 0 ? "no light casts VPLs (light parameter CastsVpls) and nothing emissive"
                                : fmt::format("the {} lights that cast VPLs emit nothing", flagged);
+    if (!emitters.empty() && !in.emissive) plan.reason += " (r.VPL.EmissiveSurfaces is 0)";
     return plan;
   }
   const uint32_t paths = std::max(in.paths, 1u);
@@ -91,6 +147,15 @@ VplPlan planVpls(const Scene& scene, const std::vector<bool>& castsVpls, const P
   uint32_t first = 0;
   for (size_t i = 0; i < power.size(); ++i) {
     if (count[i] == 0) continue;
+    if (i == scene.lights().size()) {  // the emissive surfaces
+      VplSource s;
+      s.info = glm::uvec4(uint32_t(emitters.size()), first, count[i], kSourceEmissive);
+      s.scale.x = kPi / float(count[i]);
+      first += count[i];
+      plan.sources.push_back(s);
+      plan.emitters = emitters;
+      continue;
+    }
     const Light& l = scene.lights()[i];
     VplSource s;
     s.info = glm::uvec4(uint32_t(i), first, count[i], sourceType(l.type));
@@ -111,6 +176,7 @@ VplPlan planVpls(const Scene& scene, const std::vector<bool>& castsVpls, const P
     plan.sources.push_back(s);
   }
   plan.paths = first;
+  plan.vplsPerPath = plan.bounces + (plan.emitters.empty() ? 0u : 1u);
 
   // The merge grid over the scene's bounds, with half a cell of margin on every side so
   // hits on the bounds' faces never fall on a cell edge by rounding.
@@ -132,9 +198,9 @@ VplPlan planVpls(const Scene& scene, const std::vector<bool>& castsVpls, const P
   plan.grid.dims = dims;
   plan.grid.origin = bounds.min - 0.5f * cell;
 
-  // Fixed point: Σ over all raw VPLs ≤ total power × bounces ↦ 2^30.
-  plan.fluxQuantum = float(total * double(plan.bounces) / double(1u << 30));
-  const uint64_t raw = uint64_t(plan.paths) * plan.bounces;
+  // Fixed point: Σ over all raw VPLs ≤ total power × VPLs per path ↦ 2^30.
+  plan.fluxQuantum = float(total * double(plan.vplsPerPath) / double(1u << 30));
+  const uint64_t raw = uint64_t(plan.paths) * plan.vplsPerPath;
   plan.capacity = uint32_t(std::max<uint64_t>(1, plan.merge ? std::min(raw, plan.grid.slots()) : raw));
   plan.lit = true;
   plan.reason = fmt::format(

@@ -14,17 +14,33 @@
 
 namespace bounce::vpl {
 
-inline constexpr uint32_t kSourcePoint = 1, kSourceSpot = 2, kSourceDirectional = 0;
+inline constexpr uint32_t kSourcePoint = 1, kSourceSpot = 2, kSourceDirectional = 0, kSourceEmissive = 3;
 
 /// std430 `VplSource` of shaders/vpl/common.glsl: one emitting light.
 struct VplSource {
-  glm::uvec4 info{0u};   ///< x: index in scene.lights, y: first path, z: path count, w: type
+  /// x: index in scene.lights (emissive: the number of emissive triangles), y: first path,
+  /// z: path count, w: type
+  glm::uvec4 info{0u};
   glm::vec4 disk{0.0f};  ///< directional: xyz centre of the emitting disk, w: its radius
   /// x: measure per path (solid angle Ω/n for point and spot, disk area πR²/n for
-  /// directional): flux per path = radiant intensity (or irradiance) × x.
+  /// directional, π/n for emissive surfaces): flux per path = radiant intensity (or
+  /// irradiance, or radiance × the triangle's weight) × x.
   glm::vec4 scale{0.0f};
 };
 static_assert(sizeof(VplSource) == 48);
+
+/// std430 `VplEmitter`: one emissive triangle in world space, for emissive surfaces as
+/// light sources. A path picks triangle t with probability p_t ∝ area × emitted power
+/// (from the material's factors; the hit's emission, with the texture's mean, is read on
+/// the GPU), so it carries radiance × π × area / (n p_t): `weight` is area / p_t.
+struct VplEmitter {
+  glm::vec4 v0{0.0f};  ///< w: material index (uint bits)
+  glm::vec4 v1{0.0f};  ///< w: 1 double-sided (emits from both faces), 0 front only
+  glm::vec4 v2{0.0f};
+  glm::vec4 normal{0.0f};  ///< xyz: the front face's unit normal; w: cumulative probability up to t
+  glm::vec4 weight{0.0f};  ///< x: area / p_t
+};
+static_assert(sizeof(VplEmitter) == 80);
 
 /// The regular world grid VPLs merge into (seed 004). Each cell has six slots, one per
 /// dominant axis and sign of the VPL's normal, so the two sides of a thin wall and the
@@ -51,12 +67,17 @@ struct PlanInput {
   uint32_t bounces = 1;   ///< VPLs per path (a VPL at each of the first `bounces` hits)
   float gridCell = 0.0f;  ///< metres; 0: the scene's longest side / gridResolution
   uint32_t gridResolution = 8;
-  bool merge = true;  ///< false: every raw VPL is a light of its own
+  bool merge = true;     ///< false: every raw VPL is a light of its own
+  bool emissive = true;  ///< emissive surfaces emit light paths (and are VPLs themselves)
 };
 
 struct VplPlan {
   std::vector<VplSource> sources;
-  uint32_t paths = 0;  ///< paths actually assigned (sum over sources)
+  std::vector<VplEmitter> emitters;  ///< emissive triangles (the last source when not empty)
+  uint32_t paths = 0;                ///< paths actually assigned (sum over sources)
+  /// Raw VPLs per path: `bounces`, plus one on the emitter itself when emissive surfaces
+  /// emit (a surface light's own light on the scene is indirect to the engine, whose
+  /// lighting pass shades only punctual lights).
   uint32_t bounces = 1;
   bool merge = true;
   VplGrid grid;
@@ -69,13 +90,20 @@ struct VplPlan {
   bool lit = false;                ///< anything to generate
   std::string reason;              ///< why (or why not), for the frame report
   std::vector<std::string> notes;  ///< adjustments (grid coarsened), logged once
-  uint32_t rawVpls() const { return paths * bounces; }
+  uint32_t vplsPerPath = 1;
+  uint32_t rawVpls() const { return paths * vplsPerPath; }
 };
 
 /// Power of a light (max over colour channels), W: what its paths share.
 float lightPower(const Light& light, float sceneRadius);
 
-/// Plans a generation: `castsVpls[i]` says whether scene light i emits paths.
-VplPlan planVpls(const Scene& scene, const std::vector<bool>& castsVpls, const PlanInput& input);
+/// The emissive triangles of `scene` in world space with their sampling weights; empty
+/// when nothing emits. `power` receives π Σ area × peak radiance (W).
+std::vector<VplEmitter> emissiveTriangles(const Scene& scene, double& power);
+
+/// Plans a generation: `castsVpls[i]` says whether scene light i emits paths; `emitters`
+/// (from emissiveTriangles, cached by the caller) with their total power.
+VplPlan planVpls(const Scene& scene, const std::vector<bool>& castsVpls, const PlanInput& input,
+                 const std::vector<VplEmitter>& emitters = {}, double emitterPower = 0.0);
 
 }  // namespace bounce::vpl

@@ -70,8 +70,19 @@ class VplPlugin final : public Plugin {
     in.gridCell = settings_.gridCell.get();
     in.gridResolution = uint32_t(settings_.gridResolution.get());
     in.merge = settings_.merge.get();
+    in.emissive = settings_.emissiveSurfaces.get();
+    // The emissive triangles in world space, rebuilt when geometry, transforms or materials
+    // change (a walk over every triangle: not every frame).
+    ValueHash emitterKey;
+    emitterKey.add(static_cast<const void*>(&scene));
+    for (SceneChange kind : {SceneChange::Geometry, SceneChange::Transform, SceneChange::Material})
+      emitterKey.add(scene.revision(kind));
+    if (emitterKey.value() != emittersKey_) {
+      emitters_ = emissiveTriangles(scene, emitterPower_);
+      emittersKey_ = emitterKey.value();
+    }
     frame_ = FramePlan{};
-    frame_.plan = planVpls(scene, casts, in);
+    frame_.plan = planVpls(scene, casts, in, emitters_, emitterPower_);
     frame_.seed = uint32_t(settings_.seed.get());
     frame_.clampCells = frame.setting(settings_.clamp);
     frame_.intensity = frame.setting(settings_.intensity);
@@ -138,6 +149,9 @@ class VplPlugin final : public Plugin {
   BufferHandle list_;
   FramePlan frame_;
   uint64_t generatedKey_ = 0;
+  std::vector<VplEmitter> emitters_;
+  double emitterPower_ = 0.0;
+  uint64_t emittersKey_ = 0;
   std::set<std::string> reported_;  ///< notes already logged (once each, not every frame)
 };
 

@@ -9,6 +9,14 @@ void VplSettings::declare(PluginContext& ctx) {
                               .help = "0 culls every VPL pass (the image is then the one without GI).",
                               .ini = {"VPL", "Enable"},
                               .category = paths});
+  emissiveSurfaces = ctx.addCVar<bool>(
+      {.name = "r.VPL.EmissiveSurfaces",
+       .defaultValue = true,
+       .help = "Emissive surfaces are light sources too: their paths start on them, and a VPL on the "
+               "emitter carries its own light to the scene (the engine's lighting shades only punctual "
+               "lights). 0: punctual lights only.",
+       .ini = {"VPL", "EmissiveSurfaces"},
+       .category = paths});
   lightPaths = ctx.addCVar<int32_t>(
       {.name = "r.VPL.LightPaths",
        .defaultValue = 1024,

@@ -15,7 +15,7 @@ enum class DebugMode : int32_t {
 inline constexpr int32_t kDebugModeCount = 4;
 
 struct VplSettings {
-  CVarRef<bool> enable, merge;
+  CVarRef<bool> enable, merge, emissiveSurfaces;
   CVarRef<int32_t> lightPaths, bounces, gridResolution, seed, debugMode;
   CVarRef<float> gridCell, clamp, intensity;
   ObjectParameter<bool> castsVpls;  ///< light: "Casts VPLs"

@@ -105,5 +105,32 @@ TEST(VplPlan, FixedPointScaleKeepsEverySumBelowTwoToThe30) {
   EXPECT_EQ(unmerged.capacity, 300u);
 }
 
+TEST(VplPlan, EmissiveTrianglesAreOneMoreSourceWithAnExactWeight) {
+  // The room's one triangle made emissive (Le = 2, area 0.5·|(4,0,0)×(0,2,3)|), and a point
+  // light: the emitter gets its share of the paths by power π·A·Le, Σ_t p_t = 1, and
+  // radiance × π × (area / p) / n over n paths is the emitter's whole flux.
+  Scene s = roomWithLights({point(1.0f)});
+  s.editMaterial(0, [](Material& m) { m.emissiveFactor = glm::vec3(2.0f); });
+  double power = 0.0;
+  const std::vector<VplEmitter> emitters = emissiveTriangles(s, power);
+  ASSERT_EQ(emitters.size(), 1u);
+  const float area = 0.5f * glm::length(glm::cross(glm::vec3(4, 0, 0), glm::vec3(0, 2, 3)));
+  EXPECT_NEAR(power, kPi * area * 2.0, 1e-4);
+  EXPECT_FLOAT_EQ(emitters[0].normal.w, 1.0f);
+  EXPECT_NEAR(emitters[0].weight.x, area, 1e-5f);
+  EXPECT_NEAR(glm::length(glm::vec3(emitters[0].normal)), 1.0f, 1e-6f);
+  const VplPlan p = planVpls(s, {true}, {.paths = 1000}, emitters, power);
+  ASSERT_EQ(p.sources.size(), 2u);
+  EXPECT_EQ(p.sources[1].info.w, kSourceEmissive);
+  EXPECT_EQ(p.vplsPerPath, 2u);  // the emitter's own VPL and one bounce
+  const double expectedShare = 1000.0 * power / (power + 4.0 * kPi);
+  EXPECT_NEAR(double(p.sources[1].info.z), expectedShare, 1.0);
+  EXPECT_NEAR(p.sources[1].scale.x * float(p.sources[1].info.z) * emitters[0].weight.x * 2.0f, power, 1e-3);
+  // Switched off: the point light alone, one VPL per path.
+  const VplPlan off = planVpls(s, {true}, {.paths = 1000, .emissive = false}, emitters, power);
+  EXPECT_EQ(off.sources.size(), 1u);
+  EXPECT_EQ(off.vplsPerPath, 1u);
+}
+
 }  // namespace
 }  // namespace bounce::vpl

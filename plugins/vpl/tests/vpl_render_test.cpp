@@ -136,6 +136,58 @@ TEST_F(VplRender, LitSphereFollowsTheGeometricSeriesAndTheReference) {
   }
 }
 
+TEST_F(VplRender, WhiteFurnaceFollowsTheGeometricSeriesAndTheReference) {
+  // The closed white furnace: every wall emits Le = 1 and reflects ρ = 0.5, no punctual
+  // light. Paths start on the emissive walls, whose own VPLs carry their light, so with n
+  // bounces the irradiance is π Le (1 + ρ + … + ρⁿ) everywhere inside. Unmerged and
+  // unclamped (the unbiased estimator), 2048 paths. Pixels near the room's edges see VPLs on
+  // the adjacent wall at tiny distances (the 1/d² spikes the clamp exists for), and every
+  // pixel shares one VPL set, so one seed's image mean is off by up to 3% (measured over six
+  // seeds: 4.57 to 4.84 for 4.712; their mean 4.700, and 4.712 at 8192 paths): the mean over
+  // four seeds must be within 2.5% of the series and of the reference (16 paths per pixel).
+  // The walls are slabs whose outer and buried faces emit too: those paths and VPLs light
+  // nothing inside (shadow rays end off a VPL along its normal, inside the wall that buries it).
+  for (const int bounces : {1, 2}) {
+    start("content/tests/white_furnace.gltf",
+          {"r.VPL.Clamp=0", "r.VPL.Merge=0", "r.VPL.LightPaths=2048",
+           fmt::format("r.VPL.Bounces={}", bounces), "r.Bloom.Intensity=0"},
+          "VPL");
+    double mean = 0.0;
+    Range r;
+    for (int seed = 1; seed <= 4; ++seed) {
+      engine->console().execute(fmt::format("r.VPL.RandomSeed {}", seed));
+      RenderedFrame f = render(32, 32, {"indirect-irradiance"});
+      ASSERT_TRUE(passRan(f, "VPL.Trace")) << reasonOf(f, "VPL.Trace");
+      const ImageBuffer& e = f.images.at("indirect-irradiance");
+      const Range one = rangeOf(e);
+      r.finite = r.finite && one.finite;
+      r.min = std::min(r.min, one.min);
+      r.max = std::max(r.max, one.max);
+      mean += meanRgb(e) / 4.0;
+    }
+    double series = 0;
+    for (int k = 0; k <= bounces; ++k) series += kPi * std::pow(0.5, k);
+    engine->console().execute("r.VPL.RandomSeed 1");
+    engine->console().execute("r.VPL.Merge 1");
+    engine->console().execute("r.VPL.Clamp 0.5");
+    const double merged = meanRgb(render(32, 32, {"indirect-irradiance"}).images.at("indirect-irradiance"));
+    for (const char* line :
+         {"r.Reference.SamplesPerPixel 16", "r.Reference.ShowProgress 0", "r.GI.Technique Reference"})
+      engine->console().execute(line);
+    engine->console().execute(fmt::format("r.Reference.MaxBounces {}", bounces));
+    const double reference =
+        meanRgb(render(32, 32, {"indirect-irradiance"}).images.at("indirect-irradiance"));
+    std::printf(
+        "white furnace, %d bounce(s): VPL E mean over 4 seeds %.4f (pixels %.4f..%.4f), merged + clamp 0.5 "
+        "%.4f, series %.4f, reference %.4f\n",
+        bounces, mean, r.min, r.max, merged, series, reference);
+    EXPECT_TRUE(r.finite);
+    EXPECT_NEAR(mean, series, 0.025 * series);
+    EXPECT_NEAR(mean, reference, 0.025 * reference);
+    finish();
+  }
+}
+
 TEST_F(VplRender, MergedSphereStaysCloseToTheSeries) {
   // The same sphere with the default grid merge (8 cells across): a merged VPL is the mean
   // of points on a cap of the sphere, slightly inside it, where the identity above no
@@ -185,6 +237,27 @@ TEST_F(VplRender, CornellBoxAgainstTheReferenceAndWhatTheClampCosts) {
   EXPECT_GE(unclamped, half);
 }
 
+TEST_F(VplRender, SunlitRoomAgainstTheReference) {
+  // A closed room lit only by the sun through a window: the directional light's paths
+  // start on a disk covering the scene's bounding sphere, and only those through the
+  // window leave VPLs inside. One and two bounces against the path tracer at 32².
+  for (const int bounces : {1, 2}) {
+    start("content/tests/sunlit_room.gltf",
+          {"r.VPL.LightPaths=4096", fmt::format("r.VPL.Bounces={}", bounces), "r.Bloom.Intensity=0"}, "VPL");
+    const double vpl = meanRgb(render(32, 32, {"indirect-irradiance"}).images.at("indirect-irradiance"));
+    for (const char* line :
+         {"r.Reference.SamplesPerPixel 64", "r.Reference.ShowProgress 0", "r.GI.Technique Reference"})
+      engine->console().execute(line);
+    engine->console().execute(fmt::format("r.Reference.MaxBounces {}", bounces));
+    const double reference =
+        meanRgb(render(32, 32, {"indirect-irradiance"}).images.at("indirect-irradiance"));
+    std::printf("sunlit room, %d bounce(s): VPL E %.4f, reference %.4f, ratio %.3f\n", bounces, vpl,
+                reference, vpl / reference);
+    EXPECT_NEAR(vpl / reference, 1.0, 0.15);
+    finish();
+  }
+}
+
 TEST_F(VplRender, VplsOnOrBehindSurfacesNeverMakeNaN) {
   // Unmerged and unclamped, every VPL lies exactly on a surface the camera sees (pixels
   // coincide with VPLs: d → 0), and a second light sits exactly on the floor, so half its
@@ -231,9 +304,11 @@ TEST_F(VplRender, NoLightThatCastsVplsMeansNoVplPassAndTheNoGiImage) {
   ASSERT_EQ(withVpl.pixels.size(), none.pixels.size());
   for (size_t i = 0; i < none.pixels.size(); ++i) ASSERT_EQ(withVpl.pixels[i], none.pixels[i]) << i;
   finish();
-  start("content/tests/white_furnace.gltf", {"r.Bloom.Intensity=0"}, "VPL");
+  start("content/tests/white_furnace.gltf", {"r.VPL.EmissiveSurfaces=0", "r.Bloom.Intensity=0"}, "VPL");
   f = render(16, 16, {});
   EXPECT_EQ(f.graph.executed("VPL.Trace") || f.graph.executed("VPL.Gather"), false);
+  EXPECT_NE(reasonOf(f, "VPL.Gather").find("r.VPL.EmissiveSurfaces is 0"), std::string::npos)
+      << reasonOf(f, "VPL.Gather");
 }
 
 TEST_F(VplRender, GeneratesOnlyWhenSomethingChangedAndReproduces) {
