@@ -140,9 +140,9 @@ TEST_F(VplRender, WhiteFurnaceFollowsTheGeometricSeriesAndTheReference) {
   // The closed white furnace: every wall emits Le = 1 and reflects ρ = 0.5, no punctual
   // light. Paths start on the emissive walls, whose own VPLs carry their light, so with n
   // bounces the irradiance is π Le (1 + ρ + … + ρⁿ) everywhere inside. Unmerged and
-  // unclamped (the unbiased estimator), 2048 paths. Pixels near the room's edges see VPLs on
-  // the adjacent wall at tiny distances (the 1/d² spikes the clamp exists for), and every
-  // pixel shares one VPL set, so one seed's image mean is off by up to 3% (measured over six
+  // unclamped (the unbiased estimator), 2048 paths. The camera sees the back wall, lit by
+  // VPLs on the walls around it from a few tens of centimetres on (their 1/d² is what
+  // varies), and every pixel shares one VPL set, so one seed's image mean is off by up to 3% (six
   // seeds: 4.57 to 4.84 for 4.712; their mean 4.700, and 4.712 at 8192 paths): the mean over
   // four seeds must be within 2.5% of the series and of the reference (16 paths per pixel).
   // The walls are slabs whose outer and buried faces emit too: those paths and VPLs light
