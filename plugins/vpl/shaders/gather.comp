@@ -11,6 +11,11 @@
 // with 1,024 VPLs per invocation whole SIMD rows of pixels (8 lanes share the count)
 // reported shadow-ray hits inside an empty sphere and lost 28% of the light; with 512 none.
 // 64 lights leave each shadow ray about 1,000 traversal steps.
+//
+// Interleaved sampling (Keller and Heidrich 2001), r.VPL.Interleave k > 1: pixel (x, y)
+// gathers only the VPLs i ≡ (x mod k) + k (y mod k) (mod k²), scaled by k², and
+// VPL.Deinterleave averages each k×k window, which holds every residue once, where the
+// surface is continuous: k² times fewer shadow rays.
 #define RAY_TRACING_BINDING 0
 #include "bounce/ray_tracing.glsl"
 #include "bounce/gbuffer.glsl"
@@ -34,6 +39,7 @@ layout(push_constant) uniform Push {
   uvec4 size;        // xy: view size, z: VPLs the list's buffer holds, w: this batch's first VPL
   vec4 params;       // x: intensity, y: how far off a VPL (along its normal) its shadow ray ends (m), z: batch
                      // size, w: 1 first batch (no sum to read) + 2 last batch (scale and sanitize)
+  uvec4 interleave;  // x: k (1: every pixel gathers every VPL)
 };
 
 // (0.1 mm)²: nearer than this the direction from the pixel to the VPL is rounding noise
@@ -48,7 +54,11 @@ void main() {
   bool firstBatch = (flags & 1u) != 0u, lastBatch = (flags & 2u) != 0u;
   // Never past the buffer, whatever the header says (a list not yet generated).
   uint count = min(vplHeader.x, size.z);
-  uint begin = size.w, end = min(count, begin + uint(params.z));
+  uint k = max(interleave.x, 1u), stride = k * k;
+  uint residue = uint(p.x) % k + k * (uint(p.y) % k);
+  // This pixel's VPLs are residue + stride·j; the batch covers j in [size.w, size.w + batch).
+  uint slots = count > residue ? (count - residue + stride - 1u) / stride : 0u;
+  uint begin = size.w, end = min(slots, begin + uint(params.z));
   float depth = texelFetch(gDepth, p, 0).r;
   if (isBackground(depth)) {
     if (firstBatch) imageStore(outIrradiance, p, vec4(0.0));
@@ -65,8 +75,8 @@ void main() {
   vec3 origin = P + N * offset;
   vec3 E = firstBatch ? vec3(0.0) : imageLoad(outIrradiance, p).rgb;
   uint rays = 0u;
-  for (uint i = begin; i < end; ++i) {
-    VplLight l = vplLights[i];
+  for (uint j = begin; j < end; ++j) {
+    VplLight l = vplLights[residue + stride * j];
     vec3 toLight = l.positionSlot.xyz - origin;
     float d2 = dot(toLight, toLight);
     if (!(d2 > VPL_MIN_DISTANCE2)) continue;  // also false for NaN
@@ -94,6 +104,6 @@ void main() {
     E += contribution;
   }
   countWork(WORK_RAYS, rays);
-  if (lastBatch) E = sanitize(E * params.x, HALF_MAX);
+  if (lastBatch) E = sanitize(E * (params.x * float(stride)), HALF_MAX);
   imageStore(outIrradiance, p, vec4(E, 1.0));
 }

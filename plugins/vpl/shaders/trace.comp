@@ -165,7 +165,8 @@ void main() {
   // Nothing to carry (an emitter of zero or bad radiance): no path.
   uint bounce = any(greaterThan(flux, vec3(0.0))) ? 0u : counts.y;
   for (; bounce < counts.y; ++bounce) {
-    ++rays;
+    // The first ray of every path is recorded on the CPU (paths); count the others.
+    if (bounce > 0u) ++rays;
     RayHit h = traceClosestHit(origin, dir, 0.0, tMax);
     if (!h.hit) break;
     if (bounce == 0u && range > 0.0) {

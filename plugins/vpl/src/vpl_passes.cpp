@@ -132,24 +132,29 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
     glm::vec4 cameraClamp;
     glm::uvec4 size;
     glm::vec4 params;
+    glm::uvec4 interleave;
   } push{frame.view.inverseViewProjection, glm::vec4(frame.view.position, clampDistance * clampDistance),
          glm::uvec4(frame.view.width, frame.view.height, f.listCapacity, 0u),
          // Shadow rays aim at a point this far off the VPL along its normal: merged, 5% of a
          // cell, the sagitta over a cell of a convex surface of radius 2.5 cells (a merged VPL
          // is the mean of points on its surface, inside a convex one by that much); unmerged,
          // the shader's 1e-3 of the coordinates (the VPL is a hit point on its surface).
-         glm::vec4(f.intensity, f.plan.merge ? 0.05f * f.plan.grid.cell : 0.0f, 0.0f, 0.0f)};
+         glm::vec4(f.intensity, f.plan.merge ? 0.05f * f.plan.grid.cell : 0.0f, 0.0f, 0.0f),
+         glm::uvec4(f.interleave, 0u, 0u, 0u)};
   static_assert(sizeof(GatherPush) <= 128);
   const uint32_t capacity = f.listCapacity;
+  const uint32_t k = std::max(f.interleave, 1u);
+  TextureHandle gathered;
   graph.addPass("VPL.Gather", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const RayTracingSceneHandles rt = readRayTracingScene(b, bb);
     const BufferHandle lights = b.read(list, Access::StorageRead);
     const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
     const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-    const TextureHandle out = b.write(
-        b.createTexture("VPL.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R32G32B32A32_SFLOAT)),
-        Access::StorageReadWrite);
-    bb.setTexture(channels::IndirectDiffuse, out);
+    const TextureHandle out = b.write(b.createTexture(k == 1 ? "VPL.IndirectIrradiance" : "VPL.Interleaved",
+                                                      TextureDesc::viewSized(VK_FORMAT_R32G32B32A32_SFLOAT)),
+                                      Access::StorageReadWrite);
+    if (k == 1) bb.setTexture(channels::IndirectDiffuse, out);
+    gathered = out;
     b.condition(litCondition(f));
     return [=](PassContext& ctx) {
       gpu::Bindings bind;
@@ -160,7 +165,9 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
       // Batches of kGatherBatch lights, each adding to the sum (gather.comp says why): as many
       // as the list's capacity needs; those past its actual length return at once.
       const gpu::Pipeline& pipeline = ctx.pipelines().compute({std::string(kShaders) + "gather.comp", {}});
-      const uint32_t batches = std::max(1u, (capacity + kGatherBatch - 1) / kGatherBatch);
+      // Interleaved, each pixel takes every k²-th VPL: k² times fewer per pixel.
+      const uint32_t perPixel = (capacity + k * k - 1) / (k * k);
+      const uint32_t batches = std::max(1u, (perPixel + kGatherBatch - 1) / kGatherBatch);
       for (uint32_t i = 0; i < batches; ++i) {
         GatherPush p = push;
         p.size.w = i * kGatherBatch;
@@ -176,6 +183,34 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
       const gpu::Image& target = ctx.image(out);
       ctx.addWork(WorkUnit::ImageBytes, uint64_t(target.extent().width) * target.extent().height *
                                             formatBytesPerTexel(target.format()));
+    };
+  });
+  if (k == 1) return;
+  struct DeinterleavePush {
+    glm::mat4 inverseViewProjection;
+    glm::vec4 cameraPosition;
+    glm::uvec4 size;
+  } filter{frame.view.inverseViewProjection, glm::vec4(frame.view.position, 1.0f),
+           glm::uvec4(frame.view.width, frame.view.height, k, 0u)};
+  graph.addPass("VPL.Deinterleave", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
+    const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
+    const TextureHandle in = b.read(gathered, Access::Sampled);
+    const TextureHandle out = b.write(
+        b.createTexture("VPL.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
+        Access::StorageWrite);
+    bb.setTexture(channels::IndirectDiffuse, out);
+    b.condition(litCondition(f));
+    return [=](PassContext& ctx) {
+      gpu::Bindings bind;
+      bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
+          .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
+          .texture("interleaved", in, gpu::SamplerKind::NearestClamp)
+          .storage("outIrradiance", out);
+      ctx.dispatchThreads(ctx.pipelines().compute({std::string(kShaders) + "deinterleave.comp", {}}), bind,
+                          {filter.size.x, filter.size.y, 1}, filter);
+      // k² texels read and one written per pixel.
+      ctx.addWork(WorkUnit::ImageBytes, uint64_t(filter.size.x) * filter.size.y * (16u * k * k + 8u));
     };
   });
 }

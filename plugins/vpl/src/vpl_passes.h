@@ -3,7 +3,7 @@
 //   FrameBegin       VPL.Setup (light table, clear the merge grid), VPL.Trace (light paths,
 //                    VPLs into the grid), VPL.Merge (compact the grid into the VPL list)
 //                    — only when the scene or a generation setting changed
-//   IndirectDiffuse  VPL.Gather: the IndirectDiffuse channel
+//   IndirectDiffuse  VPL.Gather (+ VPL.Deinterleave when interleaved): the IndirectDiffuse channel
 //   DebugView        VPL.Debug: r.VPL.DebugMode 2 and 3
 
 #include "vpl_plan.h"
@@ -27,6 +27,7 @@ struct FramePlan {
   std::string regenerateReason;
   float clampCells = 0.5f;  ///< r.VPL.Clamp (cells)
   float intensity = 1.0f;
+  uint32_t interleave = 1;    ///< r.VPL.Interleave
   uint32_t listCapacity = 1;  ///< VPLs the list's buffer holds (the gather never reads past it)
 };
 
@@ -34,7 +35,7 @@ struct FramePlan {
 /// `onGenerated` runs when the merge pass is recorded (the list then holds this plan).
 BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferHandle list,
                                  std::function<void()> onGenerated);
-/// VPL.Gather, publishing the IndirectDiffuse channel.
+/// VPL.Gather (and VPL.Deinterleave for r.VPL.Interleave > 1), publishing the IndirectDiffuse channel.
 void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list);
 /// VPL.Debug for modes 2 and 3, publishing the DebugView channel.
 void addDebugPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list,

@@ -6,7 +6,7 @@
 // Per frame:
 //   FrameBegin       VPL.Setup, VPL.Trace, VPL.Merge — only when the scene or a generation
 //                    setting changed since the VPL list was last generated
-//   IndirectDiffuse  VPL.Gather
+//   IndirectDiffuse  VPL.Gather (+ VPL.Deinterleave)
 //   DebugView        the indirect irradiance (mode 1), VPL.Debug (modes 2 and 3)
 
 #include "vpl_passes.h"
@@ -42,6 +42,7 @@ class VplPlugin final : public Plugin {
     ctx.addQualityKnob({.cvar = "r.VPL.Bounces", .values = {"1", "2", "3"}, .label = "bounces"});
     ctx.addQualityKnob({.cvar = "r.VPL.GridResolution", .values = {"4", "8", "16"}, .label = "grid"});
     ctx.addQualityKnob({.cvar = "r.VPL.Clamp", .values = {"0", "0.25", "0.5", "1"}, .label = "clamp"});
+    ctx.addQualityKnob({.cvar = "r.VPL.Interleave", .values = {"1", "2", "4"}, .label = "interleave"});
     ctx.addConsoleCommand({.name = "vpl.Status",
                            .help = "Prints the last VPL generation: lights, paths, merge grid.",
                            .run = [this](const std::vector<std::string>&) { return status(); }});
@@ -86,6 +87,7 @@ class VplPlugin final : public Plugin {
     frame_.seed = uint32_t(settings_.seed.get());
     frame_.clampCells = frame.setting(settings_.clamp);
     frame_.intensity = frame.setting(settings_.intensity);
+    frame_.interleave = uint32_t(settings_.interleave.get());
     for (const std::string& n : frame_.plan.notes)
       if (reported_.insert(n).second) log::warn("VPL: {}", n);
 
@@ -101,7 +103,9 @@ class VplPlugin final : public Plugin {
       key.add(scene.revision(kind));
     for (const CVar* v : frame.cvars.list("r.VPL.")) {
       const std::string& name = v->name();
-      if (name == "r.VPL.Clamp" || name == "r.VPL.Intensity" || name == "r.VPL.DebugMode") continue;
+      if (name == "r.VPL.Clamp" || name == "r.VPL.Intensity" || name == "r.VPL.DebugMode" ||
+          name == "r.VPL.Interleave")
+        continue;
       key.add(name);
       key.add(v->valueText());
     }

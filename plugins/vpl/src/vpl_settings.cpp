@@ -75,6 +75,15 @@ void VplSettings::declare(PluginContext& ctx) {
        .ini = {"VPL", "ClampDistance"},
        .postProcess = "VPLClamp",
        .category = gather});
+  interleave = ctx.addCVar<int32_t>(
+      {.name = "r.VPL.Interleave",
+       .defaultValue = 1,
+       .help =
+           "Interleaved sampling (Keller and Heidrich 2001): each pixel of a k×k tile gathers every k²-th "
+           "VPL and a geometry-aware k×k filter recombines them: k² times fewer shadow rays. 1: off.",
+       .allowed = {1, 2, 4},
+       .ini = {"VPL", "Interleave"},
+       .category = gather});
   intensity = ctx.addCVar<float>({.name = "r.VPL.Intensity",
                                   .defaultValue = 1.0f,
                                   .help = "Scales the indirect irradiance the VPLs publish.",

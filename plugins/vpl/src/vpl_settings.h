@@ -16,7 +16,7 @@ inline constexpr int32_t kDebugModeCount = 4;
 
 struct VplSettings {
   CVarRef<bool> enable, merge, emissiveSurfaces;
-  CVarRef<int32_t> lightPaths, bounces, gridResolution, seed, debugMode;
+  CVarRef<int32_t> lightPaths, bounces, gridResolution, seed, debugMode, interleave;
   CVarRef<float> gridCell, clamp, intensity;
   ObjectParameter<bool> castsVpls;  ///< light: "Casts VPLs"
 
