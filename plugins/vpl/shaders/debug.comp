@@ -34,7 +34,8 @@ void main() {
   vec3 P = worldPositionFromDepth(uv, background ? 0.5 : depth, inverse(viewProjection));
   float surfaceDistance = background ? 1e30 : length(P - cameraPosition.xyz);
   float peak = max(uintBitsToFloat(vplHeader.y), 1e-30);
-  uint count = vplHeader.x;
+  // At most 60,000 VPLs: llvmpipe leaves a loop after 65,535 iterations (gather.comp).
+  uint count = min(vplHeader.x, 60000u);
   vec3 colour = 0.25 * base;
   if (size.z == 2u) {
     float nearest = 1e30;

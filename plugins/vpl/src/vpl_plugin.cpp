@@ -94,8 +94,8 @@ class VplPlugin final : public Plugin {
     // The list keeps its buffer while it is big enough (a new one has undefined contents,
     // so its generation is part of what the list depends on).
     const uint64_t bytes = vplListBytes(frame_.plan.capacity);
-    if (bytes > list.desc().size) list.setDesc({bytes});
-    frame_.listCapacity = uint32_t((list.desc().size - 16) / 48);
+    if (bytes > vplList_.desc().size) vplList_.setDesc({bytes});
+    frame_.listCapacity = uint32_t((vplList_.desc().size - 16) / 48);
     ValueHash key;
     key.add(static_cast<const void*>(&scene));
     for (SceneChange kind :
@@ -109,14 +109,14 @@ class VplPlugin final : public Plugin {
       key.add(name);
       key.add(v->valueText());
     }
-    key.add(list.generation());
+    key.add(vplList_.generation());
     const uint64_t k = key.value();
     frame_.regenerate = k != generatedKey_;
     frame_.regenerateReason = generatedKey_ == 0 ? "first generation"
                               : frame_.regenerate
                                   ? "the scene or an r.VPL setting changed"
                                   : "VPLs up to date: nothing changed since they were generated";
-    list_ = graph.importBuffer(list);
+    list_ = graph.importBuffer(vplList_);
     list_ = addGenerationPasses(graph, frame_, list_, [this, k] { generatedKey_ = k; });
   }
 
@@ -149,8 +149,8 @@ class VplPlugin final : public Plugin {
   }
 
   VplSettings settings_;
-  PersistentBuffer list{"VPL.Lights", {vplListBytes(1)}};
-  BufferHandle list_;
+  PersistentBuffer vplList_{"VPL.Lights", {vplListBytes(1)}};
+  BufferHandle list_;  ///< this frame's latest version of vplList_
   FramePlan frame_;
   uint64_t generatedKey_ = 0;
   std::vector<VplEmitter> emitters_;
