@@ -375,6 +375,31 @@ TEST_F(VplRender, VplsOnOrBehindSurfacesNeverMakeNaN) {
   }
 }
 
+TEST_F(VplRender, HdrEmittersAndDegenerateGeometryStayFinite) {
+  // A ceiling panel 10^4 times brighter than the furnace walls, and a furnace with
+  // degenerate triangles and zero normals inside (both emissive-lit: paths start on the
+  // emitters), unclamped and unmerged as well as with the defaults: every output finite and
+  // ≥ 0, and the rooms lit.
+  for (const char* scene : {"content/tests/hdr_emitter.gltf", "content/tests/degenerate_geometry.gltf"}) {
+    for (const char* sets : {"r.VPL.Clamp 0.5", "r.VPL.Clamp 0"}) {
+      start(scene, {"r.VPL.Bounces=2", "r.Bloom.Intensity=0"}, "VPL");
+      engine->console().execute(sets);
+      if (std::string(sets) == "r.VPL.Clamp 0") engine->console().execute("r.VPL.Merge 0");
+      RenderedFrame f = render(24, 24, {"indirect-irradiance", "radiance"});
+      ASSERT_TRUE(passRan(f, "VPL.Gather")) << reasonOf(f, "VPL.Gather");
+      for (const char* aov : {"indirect-irradiance", "radiance"}) {
+        const Range r = rangeOf(f.images.at(aov));
+        EXPECT_TRUE(r.finite) << scene << " " << aov;
+        EXPECT_GE(r.min, 0.0) << scene << " " << aov;
+      }
+      const double e = meanRgb(f.images.at("indirect-irradiance"));
+      std::printf("%s, %s: E mean %.4g\n", scene, sets, e);
+      EXPECT_GT(e, 1.0) << scene;
+      finish();
+    }
+  }
+}
+
 TEST_F(VplRender, NoLightThatCastsVplsMeansNoVplPassAndTheNoGiImage) {
   // The Cornell box with its light not casting VPLs: every VPL pass culled with the reason
   // and the image equal, bit for bit, to the one without GI. The white furnace (lit by
