@@ -52,20 +52,48 @@ class SdkTest : public ::testing::Test {
     fs::remove_all(base_, ec);
   }
 
-  // Runs a shell command from `base_` with its output in `<name>.log`; seconds taken, or
-  // a test failure with the log's tail.
-  double run(const std::string& name, const std::string& command) {
+  struct Outcome {
+    int status = -1;
+    std::string log;
+  };
+  // Runs a shell command from `base_` with its output in `<name>.log`.
+  Outcome runCommand(const std::string& name, const std::string& command) {
     const fs::path log = base_ / (name + ".log");
     const auto start = std::chrono::steady_clock::now();
     const int status =
         std::system(fmt::format("cd {} && {} > {} 2>&1", quoted(base_), command, quoted(log)).c_str());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const int code = status == -1 ? -1 : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    std::string text = readText(log);
-    if (text.size() > 6000) text = "...\n" + text.substr(text.size() - 6000);
-    EXPECT_EQ(code, 0) << name << " failed: " << command << "\n" << text;
     std::cout << fmt::format("{}: {:.1f} s\n", name, seconds);
-    return seconds;
+    return {status == -1        ? -1
+            : WIFEXITED(status) ? WEXITSTATUS(status)
+                                : 128 + WTERMSIG(status),
+            readText(log)};
+  }
+  // The same, failing the test (with the log's tail) unless the command succeeds.
+  void run(const std::string& name, const std::string& command) {
+    Outcome o = runCommand(name, command);
+    if (o.log.size() > 6000) o.log = "...\n" + o.log.substr(o.log.size() - 6000);
+    EXPECT_EQ(o.status, 0) << name << " failed: " << command << "\n" << o.log;
+  }
+  // Configures a plugin project in a clean folder against the install alone (the package
+  // registry off, so only CMAKE_PREFIX_PATH finds Bounce).
+  std::string configure(const fs::path& source, const fs::path& build) const {
+    return fmt::format(
+        "{} -S {} -B {} -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH={} "
+        "-DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF",
+        quoted(BOUNCE_CMAKE_COMMAND), quoted(source), quoted(build), quoted(prefix_));
+  }
+  // A copy of the example plugin whose descriptor has `from` replaced by `to`.
+  fs::path pluginWithDescriptorEdit(const std::string& name, const std::string& from,
+                                    const std::string& to) const {
+    const fs::path copy = base_ / name;
+    fs::copy(fs::path(BOUNCE_SOURCE_DIR) / "tests/sdk/constant_plugin", copy, fs::copy_options::recursive);
+    std::string text = readText(copy / "SdkConstant.bplugin");
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    std::ofstream(copy / "SdkConstant.bplugin", std::ios::trunc) << text;
+    return copy;
   }
 
   // The installed bounce-render at 32x32, with nothing of the source tree in its
@@ -87,6 +115,7 @@ class SdkTest : public ::testing::Test {
 };
 
 TEST_F(SdkTest, AnOutOfTreePluginBuildsAgainstTheInstallAndRendersWithTheInstalledApp) {
+  // One test, not several: the install is the slow part and each test runs in a process of its own.
   run("install", fmt::format("{} --install {} --prefix {}", quoted(BOUNCE_CMAKE_COMMAND),
                              quoted(BOUNCE_BINARY_DIR), quoted(prefix_)));
   ASSERT_FALSE(HasFailure());
@@ -102,12 +131,9 @@ TEST_F(SdkTest, AnOutOfTreePluginBuildsAgainstTheInstallAndRendersWithTheInstall
   // Installed shaders are copies: the prefix must not lean on the source tree.
   EXPECT_FALSE(fs::is_symlink(prefix_ / "lib/bounce/plugins/Ambient/shaders"));
 
-  // A clean build folder; the package registry off, so only CMAKE_PREFIX_PATH finds Bounce.
   const fs::path source = fs::path(BOUNCE_SOURCE_DIR) / "tests/sdk/constant_plugin";
   const fs::path build = base_ / "plugin-build";
-  run("configure", fmt::format("{} -S {} -B {} -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH={} "
-                               "-DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF",
-                               quoted(BOUNCE_CMAKE_COMMAND), quoted(source), quoted(build), quoted(prefix_)));
+  run("configure", configure(source, build));
   ASSERT_FALSE(HasFailure());
   EXPECT_NE(
       readText(build / "CMakeCache.txt").find("Bounce_DIR:PATH=" + (prefix_ / "lib/cmake/Bounce").string()),
@@ -140,6 +166,24 @@ TEST_F(SdkTest, AnOutOfTreePluginBuildsAgainstTheInstallAndRendersWithTheInstall
       brightest = std::max({brightest, c.r, c.g, c.b});
     }
   EXPECT_FLOAT_EQ(brightest, 0.25f);
+
+  // bounce_add_plugin refuses, at configure time and in one line, a descriptor for another
+  // plugin API and one whose library the engine would not find.
+  const Outcome otherApi = runCommand(
+      "configure-other-api",
+      configure(pluginWithDescriptorEdit("other-api", "\"EngineApiVersion\": 1", "\"EngineApiVersion\": 99"),
+                base_ / "other-api-build"));
+  EXPECT_NE(otherApi.status, 0);
+  EXPECT_NE(otherApi.log.find("targets plugin API 99; this SDK provides 1"), std::string::npos)
+      << otherApi.log;
+  const Outcome otherLibrary =
+      runCommand("configure-other-library",
+                 configure(pluginWithDescriptorEdit("other-library", "\"Library\": \"bounce_sdk_constant\"",
+                                                    "\"Library\": \"bounce_elsewhere\""),
+                           base_ / "other-library-build"));
+  EXPECT_NE(otherLibrary.status, 0);
+  EXPECT_NE(otherLibrary.log.find("names the library \"bounce_elsewhere\""), std::string::npos)
+      << otherLibrary.log;
 }
 
 }  // namespace
