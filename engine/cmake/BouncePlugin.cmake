@@ -17,13 +17,21 @@
 
 set(BOUNCE_PLUGIN_INSTALL_DIR lib/bounce/plugins)
 
+# Stops configuring with one line naming the plugin target (the arguments after it are
+# joined, so no semicolons). The leading space makes CMake print the text as it is instead
+# of wrapping it.
+function(bounce_plugin_configure_error target)
+  string(JOIN "" text ${ARGN})
+  message(FATAL_ERROR " bounce_add_plugin(${target}): ${text}")
+endfunction()
+
 function(bounce_add_plugin target)
   cmake_parse_arguments(ARG "" "FOLDER;DESCRIPTOR;SHADERS;CONTENT" "SOURCES;LIBRARIES" ${ARGN})
   if(ARG_UNPARSED_ARGUMENTS)
-    message(FATAL_ERROR "bounce_add_plugin(${target}): unexpected arguments: ${ARG_UNPARSED_ARGUMENTS}")
+    bounce_plugin_configure_error(${target} "unexpected arguments: ${ARG_UNPARSED_ARGUMENTS}")
   endif()
   if(NOT ARG_SOURCES)
-    message(FATAL_ERROR "bounce_add_plugin(${target}): no SOURCES")
+    bounce_plugin_configure_error(${target} "no SOURCES")
   endif()
 
   # The descriptor names the library the engine opens and, by default, the folder.
@@ -31,30 +39,33 @@ function(bounce_add_plugin target)
     file(GLOB found ${CMAKE_CURRENT_SOURCE_DIR}/*.bplugin)
     list(LENGTH found count)
     if(NOT count EQUAL 1)
-      message(FATAL_ERROR "bounce_add_plugin(${target}): expected one *.bplugin in ${CMAKE_CURRENT_SOURCE_DIR}, "
-                          "found ${count}; name it with DESCRIPTOR")
+      bounce_plugin_configure_error(${target} "expected one *.bplugin in ${CMAKE_CURRENT_SOURCE_DIR}, "
+                                  "found ${count} (name one with DESCRIPTOR)")
     endif()
     set(ARG_DESCRIPTOR ${found})
   endif()
   get_filename_component(descriptor ${ARG_DESCRIPTOR} ABSOLUTE)
+  if(NOT EXISTS ${descriptor})
+    bounce_plugin_configure_error(${target} "descriptor ${descriptor} does not exist")
+  endif()
   file(READ ${descriptor} json)
   string(JSON library ERROR_VARIABLE json_error GET "${json}" Library)
   if(json_error)
-    message(FATAL_ERROR "bounce_add_plugin(${target}): ${descriptor}: no \"Library\": ${json_error}")
+    bounce_plugin_configure_error(${target} "${descriptor}: no \"Library\": ${json_error}")
   endif()
   if(NOT library STREQUAL target)
-    message(FATAL_ERROR "bounce_add_plugin(${target}): ${descriptor} names the library \"${library}\"; "
-                        "the engine would not find lib${target}.so")
+    bounce_plugin_configure_error(${target} "${descriptor} names the library \"${library}\", so "
+                                  "the engine would not find lib${target}.so")
   endif()
   string(JSON api ERROR_VARIABLE json_error GET "${json}" EngineApiVersion)
   if(NOT json_error AND DEFINED BOUNCE_PLUGIN_API_VERSION AND NOT api EQUAL BOUNCE_PLUGIN_API_VERSION)
-    message(FATAL_ERROR "bounce_add_plugin(${target}): ${descriptor} targets plugin API ${api}; "
-                        "this SDK provides ${BOUNCE_PLUGIN_API_VERSION}")
+    bounce_plugin_configure_error(${target} "${descriptor} targets plugin API ${api}, "
+                                  "this SDK provides ${BOUNCE_PLUGIN_API_VERSION}")
   endif()
   if(NOT ARG_FOLDER)
     string(JSON ARG_FOLDER ERROR_VARIABLE json_error GET "${json}" Name)
     if(json_error)
-      message(FATAL_ERROR "bounce_add_plugin(${target}): ${descriptor}: no \"Name\": ${json_error}")
+      bounce_plugin_configure_error(${target} "${descriptor}: no \"Name\": ${json_error}")
     endif()
   endif()
 
@@ -88,7 +99,7 @@ function(bounce_add_plugin target)
     string(TOLOWER ${kind} name)
     get_filename_component(dir ${ARG_${kind}} ABSOLUTE)
     if(NOT IS_DIRECTORY ${dir})
-      message(FATAL_ERROR "bounce_add_plugin(${target}): ${kind} ${dir} is not a folder")
+      bounce_plugin_configure_error(${target} "${kind} ${dir} is not a folder")
     endif()
     file(CREATE_LINK ${dir} ${out}/${name} SYMBOLIC)
     install(DIRECTORY ${dir}/ DESTINATION ${install_dir}/${name})
