@@ -3,10 +3,10 @@
 // the shader being compiled (for a plugin: its shaders/ folder, so nested files include
 // each other by the same names as the top-level shader does), then the compiler's include
 // dirs in order, the engine's GLSL library (<…> searches only the include dirs). A plugin's
-// own files therefore come before the engine's. It records
-// every file it opens, for hot reload, and keeps each file's text so that the second
-// pass over a shader (parse after preprocess) sees exactly the text the cache key was
-// computed from, even if a file changes in between.
+// own files therefore come before the engine's. It records every file it opens, for hot
+// reload, and keeps each file's text so that the second pass over a shader (parse after
+// preprocess) sees exactly the text the cache key was computed from, even if a file
+// changes in between.
 
 #include <glslang/Public/ShaderLang.h>
 
@@ -65,7 +65,7 @@ class ShaderIncluder final : public glslang::TShader::Includer {
   std::map<std::filesystem::path, std::string> contents_;
   std::vector<std::filesystem::path> files_;
   std::vector<std::unique_ptr<Opened>> open_;
-  // The folder includeLocal searched last, so that a failure reported by
+  // The folders includeLocal searched last, so that a failure reported by
   // includeSystem (which glslang calls next) can list every place looked in.
   std::string lastLocalHeader_;
   std::vector<std::filesystem::path> lastLocalFolders_;
