@@ -55,6 +55,15 @@ fs::path defaultUserIni() {
   return {};
 }
 
+// The apps' defaults ("content/cornell_box.gltf", bounce-soak's "config/Soak.ini") are
+// named relative to the root, and an installed app runs from anywhere: a relative path that
+// is not there from the working directory is taken from the root when it is there.
+fs::path fromWorkingDirectoryOrRoot(const fs::path& path, const fs::path& root) {
+  std::error_code ec;
+  if (path.is_absolute() || fs::exists(path, ec) || !fs::exists(root / path, ec)) return path;
+  return root / path;
+}
+
 // [Plugins] SearchPaths=DIR:DIR: more folders to find plugins in (plugin_search_path.h).
 constexpr std::string_view kSearchPathsKey = "SearchPaths";
 
@@ -92,6 +101,7 @@ fs::path Engine::locateRoot(const fs::path& hint) const {
 Engine::Engine(EngineOptions options) {
   root_ = locateRoot(options.root);
   keepGoing_ = options.keepGoing;
+  for (std::string& ini : options.iniFiles) ini = fromWorkingDirectoryOrRoot(ini, root_).string();
   iniOptions_ = options.iniFiles;
 
   // 1. Configuration layers, lowest priority first.
@@ -345,13 +355,7 @@ SceneExtrasSchema Engine::extrasSchema() const {
 
 GltfLoadResult Engine::loadScene(const fs::path& path) {
   SceneExtrasSchema schema = extrasSchema();
-  // The apps' default scenes ("content/cornell_box.gltf") are named relative to the root;
-  // an installed app runs from anywhere, so a relative path that is not there from the
-  // working directory is looked up under the root.
-  std::error_code ec;
-  const fs::path underRoot = root_ / path;
-  const bool fromRoot = path.is_relative() && !fs::exists(path, ec) && fs::exists(underRoot, ec);
-  GltfLoadResult result = loadGltf((fromRoot ? underRoot : path).string(), &schema);
+  GltfLoadResult result = loadGltf(fromWorkingDirectoryOrRoot(path, root_).string(), &schema);
   if (result.scene) scene_ = std::move(result.scene);
   return result;
 }
