@@ -56,3 +56,8 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/sdk/BounceConfigVersion.c
 install(FILES ${PROJECT_BINARY_DIR}/sdk/BounceConfig.cmake ${PROJECT_BINARY_DIR}/sdk/BounceConfigVersion.cmake
               ${CMAKE_CURRENT_LIST_DIR}/BouncePlugin.cmake
   DESTINATION ${BOUNCE_INSTALL_CMAKE_DIR})
+
+# tools/new-plugin and its template: an out-of-tree author starts a plugin from the SDK
+# (P/share/bounce/tools/new-plugin NAME writes ./<name>/, built with find_package(Bounce)).
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/tools/new-plugin DESTINATION ${BOUNCE_INSTALL_ROOT}/tools)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/tools/plugin-template DESTINATION ${BOUNCE_INSTALL_ROOT}/tools)

@@ -167,6 +167,41 @@ TEST_F(SdkTest, AnOutOfTreePluginBuildsAgainstTheInstallAndRendersWithTheInstall
     }
   EXPECT_FLOAT_EQ(brightest, 0.25f);
 
+  // tools/new-plugin, installed with the SDK, writes a plugin that builds against the
+  // install alone and passes its own test (bounce-render with validation on). Its
+  // hemisphere light gives the sky's irradiance on the floor (normal up) and a fifth of it
+  // on the ceiling (normal down).
+  const fs::path fresh = base_ / "freshgi", freshBuild = base_ / "freshgi-build";
+  run("new-plugin",
+      fmt::format("{} FreshGi {}", quoted(prefix_ / "share/bounce/tools/new-plugin"), quoted(fresh)));
+  ASSERT_FALSE(HasFailure());
+  run("configure-new-plugin", configure(fresh, freshBuild));
+  run("build-new-plugin", fmt::format("{} --build {}", quoted(BOUNCE_CMAKE_COMMAND), quoted(freshBuild)));
+  run("test-new-plugin",
+      fmt::format("env -u BOUNCE_ROOT -u BOUNCE_PLUGIN_PATH {} --test-dir {} --output-on-failure",
+                  quoted(BOUNCE_CTEST_COMMAND), quoted(freshBuild)));
+  const ImageBuffer sky = renderIndirect(
+      "render-new-plugin", fmt::format("--plugin-dir {} --gi FreshGi --set r.FreshGi.Intensity=1",
+                                       quoted(freshBuild / "plugins")));
+  ASSERT_EQ(sky.width, 32u);
+  float skyBrightest = 0.0f, skyDarkest = 1.0e9f;
+  for (uint32_t y = 0; y < sky.height; ++y)
+    for (uint32_t x = 0; x < sky.width; ++x) {
+      const float r = sky.rgb(x, y).r;
+      skyBrightest = std::max(skyBrightest, r);
+      if (r > 0.0f) skyDarkest = std::min(skyDarkest, r);
+    }
+  EXPECT_NEAR(skyBrightest, 1.0f, 1e-3f);
+  EXPECT_NEAR(skyDarkest, 0.2f, 1e-3f);
+
+  // The VPL plugin, an in-tree technique, builds as it is against the install alone and
+  // renders with the installed app (its accuracy tests run in the tree).
+  const fs::path vplBuild = base_ / "vpl-build";
+  run("configure-vpl", configure(fs::path(BOUNCE_SOURCE_DIR) / "plugins/vpl", vplBuild));
+  run("build-vpl", fmt::format("{} --build {}", quoted(BOUNCE_CMAKE_COMMAND), quoted(vplBuild)));
+  run("test-vpl", fmt::format("env -u BOUNCE_ROOT -u BOUNCE_PLUGIN_PATH {} --test-dir {} --output-on-failure",
+                              quoted(BOUNCE_CTEST_COMMAND), quoted(vplBuild)));
+
   // bounce_add_plugin refuses, at configure time and in one line, a descriptor for another
   // plugin API and one whose library the engine would not find.
   const Outcome otherApi = runCommand(

@@ -15,12 +15,11 @@ namespace bounce::vpl {
 
 namespace {
 
-constexpr const char* kShaders = "plugins/vpl/shaders/";
 // VPLs per gather dispatch (gather.comp: llvmpipe's loop-iteration cap).
 constexpr uint32_t kGatherBatch = 64;
 
-gpu::ShaderSource shader(const char* file, bool merge) {
-  return {std::string(kShaders) + file, {{"VPL_MERGE", merge ? "1" : "0"}}};
+gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file, bool merge) {
+  return {shaders / file, {{"VPL_MERGE", merge ? "1" : "0"}}};
 }
 
 std::function<PassDecision()> litCondition(const FramePlan& f) {
@@ -49,6 +48,7 @@ static_assert(sizeof(GridPush) == 64);
 
 BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferHandle list,
                                  std::function<void()> onGenerated) {
+  const std::filesystem::path shaders = f.shaders;  // copied into the record callbacks
   Blackboard& bb = graph.blackboard();
   const VplPlan& plan = f.plan;
   const bool merge = plan.merge;
@@ -99,7 +99,8 @@ BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferH
       bindRayTracingScene(bind, rt).buffer("SceneLights", lights.lights).buffer("VplSources", s);
       bind.buffer("VplEmitters", e);
       bind.buffer(merge ? "VplCells" : "VplRaw", c);
-      ctx.dispatchThreads(ctx.pipelines().compute(shader("trace.comp", merge)), bind, {paths, 1, 1}, push);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "trace.comp", merge)), bind, {paths, 1, 1},
+                          push);
       // The paths' first rays; the continuing bounces are counted by the shader.
       ctx.addWork(WorkUnit::Rays, paths);
     };
@@ -116,7 +117,8 @@ BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferH
     return [=](PassContext& ctx) {
       gpu::Bindings bind;
       bind.buffer(merge ? "VplCells" : "VplRaw", c).buffer("VplLights", o);
-      ctx.dispatchThreads(ctx.pipelines().compute(shader("merge.comp", merge)), bind, {256, 1, 1}, mergePush);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "merge.comp", merge)), bind, {256, 1, 1},
+                          mergePush);
       ctx.addWork(WorkUnit::BufferBytes, slots * 48 + vplListBytes(plan.capacity));
       if (onGenerated) onGenerated();
     };
@@ -125,6 +127,7 @@ BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferH
 }
 
 void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list) {
+  const std::filesystem::path shaders = f.shaders;  // copied into the record callbacks
   Blackboard& bb = graph.blackboard();
   const float clampDistance = f.clampCells * f.plan.grid.cell;
   struct GatherPush {
@@ -164,7 +167,7 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
           .storage("outIrradiance", out);
       // Batches of kGatherBatch lights, each adding to the sum (gather.comp says why): as many
       // as the list's capacity needs; those past its actual length return at once.
-      const gpu::Pipeline& pipeline = ctx.pipelines().compute({std::string(kShaders) + "gather.comp", {}});
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute({shaders / "gather.comp", {}});
       // Interleaved, each pixel takes every k²-th VPL: k² times fewer per pixel.
       const uint32_t perPixel = (capacity + k * k - 1) / (k * k);
       const uint32_t batches = std::max(1u, (perPixel + kGatherBatch - 1) / kGatherBatch);
@@ -207,7 +210,7 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
           .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
           .texture("interleaved", in, gpu::SamplerKind::NearestClamp)
           .storage("outIrradiance", out);
-      ctx.dispatchThreads(ctx.pipelines().compute({std::string(kShaders) + "deinterleave.comp", {}}), bind,
+      ctx.dispatchThreads(ctx.pipelines().compute({shaders / "deinterleave.comp", {}}), bind,
                           {filter.size.x, filter.size.y, 1}, filter);
       // k² texels read and one written per pixel.
       ctx.addWork(WorkUnit::ImageBytes, uint64_t(filter.size.x) * filter.size.y * (16u * k * k + 8u));
@@ -217,6 +220,7 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
 
 void addDebugPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list,
                   uint32_t mode) {
+  const std::filesystem::path shaders = f.shaders;  // copied into the record callbacks
   Blackboard& bb = graph.blackboard();
   struct DebugPush {
     glm::mat4 viewProjection;
@@ -246,7 +250,7 @@ void addDebugPass(RenderGraph& graph, const FrameContext& frame, const FramePlan
           .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
           .texture("sceneColor", scene, gpu::SamplerKind::NearestClamp)
           .storage("outDebug", out);
-      ctx.dispatchThreads(ctx.pipelines().compute({std::string(kShaders) + "debug.comp", {}}), bind,
+      ctx.dispatchThreads(ctx.pipelines().compute({shaders / "debug.comp", {}}), bind,
                           {push.size.x, push.size.y, 1}, push);
     };
   });

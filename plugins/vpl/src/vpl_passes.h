@@ -11,6 +11,7 @@
 #include <bounce/frame/frame_context.h>
 #include <bounce/graph/render_graph.h>
 
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -27,8 +28,9 @@ struct FramePlan {
   std::string regenerateReason;
   float clampCells = 0.5f;  ///< r.VPL.Clamp (cells)
   float intensity = 1.0f;
-  uint32_t interleave = 1;    ///< r.VPL.Interleave
-  uint32_t listCapacity = 1;  ///< VPLs the list's buffer holds (the gather never reads past it)
+  uint32_t interleave = 1;        ///< r.VPL.Interleave
+  uint32_t listCapacity = 1;      ///< VPLs the list's buffer holds (the gather never reads past it)
+  std::filesystem::path shaders;  ///< the plugin's shader folder (PluginContext::shaderFolder)
 };
 
 /// The generation passes; `list` is the imported persistent VPL list, returned written.

@@ -29,6 +29,7 @@ namespace bounce::vpl {
 class VplPlugin final : public Plugin {
  public:
   void startup(PluginContext& ctx) override {
+    shaders_ = ctx.shaderFolder();
     settings_.declare(ctx);
     const std::string off = "r.VPL.DebugMode 0";
     ctx.addDebugView({"VPL: indirect irradiance", "The indirect diffuse irradiance channel alone.",
@@ -83,6 +84,7 @@ class VplPlugin final : public Plugin {
       emittersKey_ = emitterKey.value();
     }
     frame_ = FramePlan{};
+    frame_.shaders = shaders_;
     frame_.plan = planVpls(scene, casts, in, emitters_, emitterPower_);
     frame_.seed = uint32_t(settings_.seed.get());
     frame_.clampCells = frame.setting(settings_.clamp);
@@ -151,6 +153,7 @@ class VplPlugin final : public Plugin {
   VplSettings settings_;
   PersistentBuffer vplList_{"VPL.Lights", {vplListBytes(1)}};
   BufferHandle list_;  ///< this frame's latest version of vplList_
+  std::filesystem::path shaders_;  ///< this plugin's shaders/ folder, wherever it is installed
   FramePlan frame_;
   uint64_t generatedKey_ = 0;
   std::vector<VplEmitter> emitters_;
