@@ -143,6 +143,7 @@ class Viewer {
   /// A fingerprint of what the refined image depends on; a change starts it over.
   uint64_t refinementState(const FrameView& view) const;
   float wallFrameMs_ = 0.0f;
+  uint32_t farOffFrames_ = 0;  ///< consecutive still frames far from the frame-time budget
   std::chrono::steady_clock::time_point lastPresent_{};
   // A `frames N` run being measured: frames left and when it started.
   struct FrameRun {
