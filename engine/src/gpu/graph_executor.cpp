@@ -306,6 +306,8 @@ class ExecutorPassContext final : public PassContext {
            buffers_[h.resource];
   }
   bool renderingActive() const { return renderingActive_; }
+  /// Which resources this pass declared with Access::TransferSrc (what read-backs may copy).
+  void setTransferSources(const std::vector<bool>* sources) { transferSources_ = sources; }
   bool countingWork() const override { return counterSlot_.has_value(); }
 
  protected:
@@ -327,6 +329,7 @@ class ExecutorPassContext final : public PassContext {
   std::vector<std::unique_ptr<Buffer>>& staging_;
   std::vector<PendingReadback>& readbacks_;
   std::optional<WorkCounterSlot> counterSlot_;
+  const std::vector<bool>* transferSources_ = nullptr;
 
   // The copy reads the resource in the state the graph left it for this pass: it must
   // have been declared as a transfer source.
@@ -349,13 +352,6 @@ class ExecutorPassContext final : public PassContext {
     memoryBarrier(cmd_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
   }
-
- public:
-  /// Which resources this pass declared with Access::TransferSrc.
-  void setTransferSources(const std::vector<bool>* sources) { transferSources_ = sources; }
-
- private:
-  const std::vector<bool>* transferSources_ = nullptr;
 
   const Buffer& stage(const void* data, uint64_t bytes) const {
     staging_.push_back(
