@@ -5,8 +5,8 @@
 #include "bounce/core/names.h"
 #include "bounce/engine.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <optional>
@@ -24,6 +24,15 @@ inline void addKeepGoing(CLI::App& app, bool& keepGoing) {
   app.add_flag("--keep-going", keepGoing,
                "Go on past bad values and unknown keys in --ini files and requested plugins that fail to "
                "start (reported; the defaults are used) instead of exiting with status 2");
+}
+
+/// `--plugin-dir DIR` (repeatable): plugin folders searched first, before $BOUNCE_PLUGIN_PATH,
+/// [Plugins] SearchPaths= and the plugins beside the app (EngineOptions::pluginDirs). A
+/// folder that does not exist is a warning, as it is on the other paths.
+inline void addPluginDirs(CLI::App& app, std::vector<std::string>& dirs) {
+  app.add_option("--plugin-dir", dirs,
+                 "Also look for plugins in DIR (repeatable; searched before $BOUNCE_PLUGIN_PATH, the ini's "
+                 "[Plugins] SearchPaths and the installed plugins; the first plugin of a name wins)");
 }
 
 /// Prints "program: message" on stderr, control characters in quoted input escaped.

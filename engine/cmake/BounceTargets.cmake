@@ -2,25 +2,8 @@
 
 set(BOUNCE_WARNINGS -Wall -Wextra -Wpedantic -Wno-missing-field-initializers)
 
-# bounce_add_plugin(<target> FOLDER <name> DESCRIPTOR <file> SOURCES ...)
-#
-# Builds one plugin as a shared library and places it, with its JSON descriptor, in
-# build/plugins/<name>/ where the engine's plugin discovery finds it. A plugin links
-# bounce_engine and may include only the public headers under engine/include.
-function(bounce_add_plugin target)
-  cmake_parse_arguments(ARG "" "FOLDER;DESCRIPTOR" "SOURCES;LIBRARIES" ${ARGN})
-  add_library(${target} SHARED ${ARG_SOURCES})
-  target_link_libraries(${target} PRIVATE bounce_engine ${ARG_LIBRARIES})
-  target_compile_options(${target} PRIVATE ${BOUNCE_WARNINGS})
-  set(out ${BOUNCE_PLUGIN_OUTPUT_DIR}/${ARG_FOLDER})
-  set_target_properties(${target} PROPERTIES
-    LIBRARY_OUTPUT_DIRECTORY ${out}
-    PREFIX "lib"
-    CXX_VISIBILITY_PRESET hidden
-    VISIBILITY_INLINES_HIDDEN ON)
-  get_filename_component(desc_name ${ARG_DESCRIPTOR} NAME)
-  configure_file(${ARG_DESCRIPTOR} ${out}/${desc_name} COPYONLY)
-endfunction()
+# bounce_add_plugin: the same function out-of-tree plugins get from find_package(Bounce).
+include(${CMAKE_CURRENT_LIST_DIR}/BouncePlugin.cmake)
 
 # bounce_add_test(<target> SOURCES ... [LIBRARIES ...])
 #

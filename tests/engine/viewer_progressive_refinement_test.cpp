@@ -6,8 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
+#include <vector>
 
 namespace bounce::viewer {
 namespace {
@@ -83,6 +86,56 @@ TEST(ProgressiveRefinement, AStillViewReachesTheFullResolutionImageAfterFactorSq
     EXPECT_EQ(jitters.size(), size_t(factor * factor));  // every phase once
     EXPECT_EQ(shown.pixels, truth.pixels) << "factor " << factor;
   }
+}
+
+TEST(ProgressiveRefinement, AnyPrefixOfJittersIsSpreadOverTheCell) {
+  // Farthest-first order: the first 4 of a 4×4 cell form the 2-pixel lattice, and the
+  // first 4 of a 10×10 cell keep at least 5 pixels apart (on the torus the cells tile).
+  for (uint32_t factor : {4u, 10u}) {
+    ProgressiveRefinement r;
+    r.reset(40, 40, factor);
+    std::vector<glm::uvec2> taken;
+    for (int f = 0; f < 4; ++f) {
+      taken.push_back(r.nextJitter());
+      r.add(ImageBuffer((40 + factor - 1) / factor, (40 + factor - 1) / factor, 1, 0.0f));
+    }
+    for (size_t a = 0; a < taken.size(); ++a)
+      for (size_t b = a + 1; b < taken.size(); ++b) {
+        auto torus = [&](uint32_t p, uint32_t q) {
+          return std::min((p + factor - q) % factor, (q + factor - p) % factor);
+        };
+        const uint32_t d = std::max(torus(taken[a].x, taken[b].x), torus(taken[a].y, taken[b].y));
+        EXPECT_GE(d, factor / 2) << "factor " << factor << ", jitters " << a << " and " << b;
+      }
+  }
+}
+
+TEST(ProgressiveRefinement, PixelsNotRenderedYetInterpolateEveryRenderedOne) {
+  // A smooth image at factor 8: the fill after 4 and 16 frames interpolates samples about
+  // 4 and 2 pixels apart, so it is much closer to the truth than the first frame upscaled
+  // (with only the latest frame upscaled, the error stayed that of one frame).
+  const uint32_t w = 96, h = 64, factor = 8;
+  ImageBuffer truth(w, h, 1);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x)
+      truth.at(x, y, 0) = std::sin(float(x) / 3.0f) * std::cos(float(y) / 4.0f);
+  auto rms = [&](const ImageBuffer& shown) {
+    double sum = 0.0;
+    for (size_t i = 0; i < truth.pixels.size(); ++i)
+      sum += (double(shown.pixels[i]) - truth.pixels[i]) * (double(shown.pixels[i]) - truth.pixels[i]);
+    return std::sqrt(sum / double(truth.pixels.size()));
+  };
+  ProgressiveRefinement r;
+  r.reset(w, h, factor);
+  std::vector<double> errors;
+  for (uint32_t f = 1; f <= 16; ++f) {
+    const ImageBuffer shown = r.add(renderedAt(truth, factor, r.nextJitter()));
+    for (float v : shown.pixels) ASSERT_TRUE(std::isfinite(v));
+    if (f == 1 || f == 4 || f == 16) errors.push_back(rms(shown));
+  }
+  std::printf("RMS error after 1, 4, 16 frames: %.4f %.4f %.4f\n", errors[0], errors[1], errors[2]);
+  EXPECT_LT(errors[1], 0.5 * errors[0]);
+  EXPECT_LT(errors[2], 0.5 * errors[1]);
 }
 
 TEST(ProgressiveRefinement, TheFirstFrameFillsEveryPixelAndAResetForgets) {

@@ -84,6 +84,9 @@ TEST_F(RayLighting, ShadowMapsAreReadableFromFrameBeginAndAgreeAwayFromShadowEdg
   // The lights' shadow maps exist before the first extension point: a FrameBegin pass
   // shades hits with them. Away from the penumbra (3×3 PCF) they agree with the rays.
   start("content/tests/shadowed_plane_point.gltf");
+  // Drawn in the frame that reads them, not kept from the one before: the FrameBegin pass
+  // must be ordered after the drawing (caching is tested in render_outputs_test).
+  engine->console().execute("r.Shadow.CacheStaticMaps 0");
   const std::vector<TestRay> rays = raysOntoPlane(0.2f);
   TraceResult withRays = trace(rays, TraceMode::DirectLight);
   TraceResult withMaps = trace(rays, TraceMode::DirectLightShadowMapped);

@@ -5,6 +5,7 @@
 #include "bounce/image/image_buffer.h"
 #include "image/image_resample.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -106,13 +107,15 @@ TEST(BounceRenderCli, ScreenPercentageRendersSmallerAndUpscalesToTheRequestedSiz
 }
 
 TEST(BounceRenderCli, BloomKeepsItsRadiusInOutputPixelsAtAnyScreenPercentage) {
-  // Bloom's chain starts at half the output size, so a 25% render blooms as wide as a full
-  // one once upscaled. With r.Bloom.Intensity 1 the image *is* the bloom
-  // (tonemap mixes it in with weight 1), so a 25% image must match the 100% one closely:
-  // 0.015 relative RMSE here, against 0.33 with the chain sized to the render, which blooms
-  // four times wider (the default threshold 1 keeps only the light and its surroundings).
+  // Bloom's chain is the full-resolution one, from half the output size, so a smaller
+  // render blooms as wide as a full one once upscaled. With r.Bloom.Intensity 1 the image
+  // *is* the bloom (tonemap mixes it in with weight 1), so it must match the 100% image:
+  // relative RMSE 0.033 at 25% and 0.11 at 10% here (a 26-pixel render: the light is two
+  // of its pixels; the full chain computed from it gives 0.016 and 0.070, the levels finer
+  // than the render folded into tonemap the rest), against 0.74 and 0.78 with the chain
+  // sized to the render, which blooms four and ten times wider.
   const std::string scene =
-      "--scene content/cornell_box.gltf --gi Ambient --width 128 --height 128 "
+      "--scene content/cornell_box.gltf --gi Ambient --width 256 --height 256 "
       "--set r.Bloom.Intensity=1 ";
   auto render = [&](const std::string& name, const std::string& settings) {
     const std::string path = scratch(name);
@@ -123,12 +126,15 @@ TEST(BounceRenderCli, BloomKeepsItsRadiusInOutputPixelsAtAnyScreenPercentage) {
     EXPECT_TRUE(readPng(path, image, &error)) << error;
     return image;
   };
-  const ImageBuffer full = render("bloom-full.png", ""),
-                    quarter = render("bloom-25.png", "--set r.ScreenPercentage=25");
-  ASSERT_EQ(quarter.width, full.width);
-  const double difference = compareImages(quarter, full).relativeRmse;
-  std::printf("bloom alone at 25%% against 100%%: relative RMSE %.4f\n", difference);
-  EXPECT_LT(difference, 0.05);
+  const ImageBuffer full = render("bloom-full.png", "");
+  for (int percent : {25, 10}) {
+    const ImageBuffer small =
+        render(fmt::format("bloom-{}.png", percent), fmt::format("--set r.ScreenPercentage={}", percent));
+    ASSERT_EQ(small.width, full.width);
+    const double difference = compareImages(small, full).relativeRmse;
+    std::printf("bloom alone at %d%% against 100%%: relative RMSE %.4f\n", percent, difference);
+    EXPECT_LT(difference, percent == 25 ? 0.05 : 0.15) << percent << "%";
+  }
 }
 
 struct BadInput {

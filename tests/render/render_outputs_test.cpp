@@ -5,8 +5,11 @@
 #include "bounce/gpu/pass_context.h"
 #include "bounce/graph/channels.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <fstream>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 namespace bounce::test {
@@ -47,6 +50,36 @@ TEST_F(RenderOutputs, NoGiTechniqueAddsNoPassAndNoResource) {
   }
   for (const CompiledResource& r : none.graph.resources)
     EXPECT_FALSE(pluginResources.count(r.name)) << r.name;
+}
+
+TEST_F(RenderOutputs, AStaticSceneDrawsItsShadowMapsOnceAndAMovedLightDrawsThemAgain) {
+  start("content/cornell_box.gltf");
+  auto shadowPass = [](const RenderedFrame& f) -> const CompiledPass& {
+    for (const CompiledPass& p : f.graph.passes)
+      if (p.name == "ShadowMaps") return p;
+    throw std::runtime_error("no ShadowMaps pass");
+  };
+  const RenderedFrame first = render(32, 32, {"radiance"});
+  EXPECT_TRUE(shadowPass(first).executed);
+  const RenderedFrame cached = render(32, 32, {"radiance"});
+  EXPECT_FALSE(shadowPass(cached).executed);
+  EXPECT_NE(shadowPass(cached).reason.find("unchanged"), std::string::npos) << shadowPass(cached).reason;
+  // The kept maps are the ones a frame would draw: the same image as with caching off.
+  engine->console().execute("r.Shadow.CacheStaticMaps 0");
+  const RenderedFrame drawn = render(32, 32, {"radiance"});
+  EXPECT_TRUE(shadowPass(drawn).executed);
+  EXPECT_EQ(cached.images.at("radiance").pixels, drawn.images.at("radiance").pixels);
+  engine->console().execute("r.Shadow.CacheStaticMaps 1");
+  EXPECT_FALSE(shadowPass(render(32, 32, {"radiance"})).executed);
+  // A light that moves changes its shadow matrices: drawn again, and the image changes.
+  engine->scene()->editLight(0, [](Light& l) { l.position.x += 0.2f; });
+  const RenderedFrame moved = render(32, 32, {"radiance"});
+  EXPECT_TRUE(shadowPass(moved).executed);
+  EXPECT_NE(moved.images.at("radiance").pixels, drawn.images.at("radiance").pixels);
+  EXPECT_FALSE(shadowPass(render(32, 32, {"radiance"})).executed);
+  // So does geometry that moves.
+  engine->scene()->setInstanceTransform(0, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.05f, 0.0f)));
+  EXPECT_TRUE(shadowPass(render(32, 32, {"radiance"})).executed);
 }
 
 TEST_F(RenderOutputs, DebugViewReplacesTheDisplayedImageAndCullsToneMapping) {

@@ -34,6 +34,7 @@ std::optional<Measurement> measureConfiguration(const Configuration& config, con
   o.userIni = std::filesystem::path();  // reproducible: no per-user settings
   o.technique = config.technique;
   o.sets = options.sets;
+  o.pluginDirs = options.pluginDirs;
   if (equalsIgnoreCase(config.technique, "Reference")) {
     // Every timed frame renders all its samples (and quietly).
     o.sets.push_back("r.Reference.Progressive=false");

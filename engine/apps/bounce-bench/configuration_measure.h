@@ -17,9 +17,10 @@ namespace bounce::bench {
 struct MeasureOptions {
   std::filesystem::path scene;
   uint32_t width = 256, height = 256;
-  uint32_t frames = 4;            ///< the first is not timed
-  std::vector<std::string> sets;  ///< global console-variable overrides
-  std::filesystem::path outDir;   ///< images go to outDir/images
+  uint32_t frames = 4;                            ///< the first is not timed
+  std::vector<std::string> sets;                  ///< global console-variable overrides
+  std::filesystem::path outDir;                   ///< images go to outDir/images
+  std::vector<std::filesystem::path> pluginDirs;  ///< --plugin-dir
 };
 
 /// Relative errors use an epsilon of 1% of the reference's mean, so dark pixels do not

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   uint32_t width = 256, height = 256, frames = 4, referenceSamples = 4096;
   int32_t referenceBounces = -1;
   bool grid = false;
-  std::vector<std::string> techniques, sets;
+  std::vector<std::string> techniques, sets, pluginDirArgs;
   app.add_option("--scene", scene, "glTF scene");
   app.add_option("--width", width, "Image width")->check(CLI::Range(8u, 8192u));
   app.add_option("--height", height, "Image height")->check(CLI::Range(8u, 8192u));
@@ -51,7 +51,9 @@ int main(int argc, char** argv) {
   app.add_option("--set", sets, "Console variable NAME=VALUE for every run (repeatable)");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
   app.add_option("--cache", cacheDir, "Reference cache folder (default ~/.cache/bounce/references)");
+  bounce::app::addPluginDirs(app, pluginDirArgs);
   if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-bench")) return *status;
+  const std::vector<fs::path> pluginDirs(pluginDirArgs.begin(), pluginDirArgs.end());
   auto fail = [](int status, const std::string& message) {
     bounce::app::printError("bounce-bench", message);
     return status;
@@ -72,6 +74,7 @@ int main(int argc, char** argv) {
     bounce::EngineOptions o;
     o.userIni = fs::path();
     o.sets = sets;
+    o.pluginDirs = pluginDirs;
     bounce::Engine probe(std::move(o));
     if (!probe.commandLineErrors().empty()) return fail(2, probe.commandLineErrors().front());
     std::vector<std::string> available;
@@ -98,7 +101,8 @@ int main(int argc, char** argv) {
                                           .height = height,
                                           .samples = referenceSamples,
                                           .bounces = referenceBounces,
-                                          .sets = sets};
+                                          .sets = sets,
+                                          .pluginDirs = pluginDirs};
   auto reference = bounce::bench::loadOrRenderReference(
       request, *device, cacheDir.empty() ? bounce::bench::defaultReferenceCache() : fs::path(cacheDir),
       &error);
@@ -124,12 +128,13 @@ int main(int argc, char** argv) {
     bounce::EngineOptions o;
     o.userIni = fs::path();
     o.sets = sets;
+    o.pluginDirs = pluginDirs;
     o.technique = t;
     bounce::Engine engine(std::move(o));
     auto c = bounce::bench::configurationsFor(engine, t, grid);
     configs.insert(configs.end(), c.begin(), c.end());
   }
-  bounce::bench::MeasureOptions options{scene, width, height, frames, sets, outDir};
+  bounce::bench::MeasureOptions options{scene, width, height, frames, sets, outDir, pluginDirs};
   for (size_t i = 0; i < configs.size(); ++i) {
     fmt::print("[{}/{}] {} ", i + 1, configs.size(), configs[i].label);
     std::fflush(stdout);

@@ -73,6 +73,7 @@ std::optional<ReferenceImages> loadOrRenderReference(const ReferenceRequest& r, 
   o.userIni = fs::path();
   o.technique = "Reference";
   o.sets = r.sets;
+  o.pluginDirs = r.pluginDirs;
   o.sets.push_back(fmt::format("r.Reference.SamplesPerPixel={}", r.samples));
   o.sets.push_back(fmt::format("r.Reference.MaxBounces={}", r.bounces));
   o.sets.push_back(fmt::format("r.Reference.Seed={}", r.seed));

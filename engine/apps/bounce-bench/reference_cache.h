@@ -20,6 +20,7 @@ struct ReferenceRequest {
   /// A seed other than the sweep's, so low-sample runs are not a prefix of the reference.
   uint32_t seed = 1000003;
   std::vector<std::string> sets;  ///< global console-variable overrides (they change the scene's light)
+  std::vector<std::filesystem::path> pluginDirs;  ///< --plugin-dir (where the Reference plugin may be)
 };
 
 struct ReferenceImages {

@@ -223,7 +223,7 @@ int main(int argc, char** argv) {
   std::string scenePath = "content/cornell_box.gltf", technique, deviceName;
   std::vector<uint32_t> sizes{256, 512};
   uint32_t frames = 10;
-  std::vector<std::string> sets, variantTexts;
+  std::vector<std::string> sets, variantTexts, pluginDirs;
   app.add_option("--scene", scenePath, "glTF scene");
   uint32_t generate = 0;
   app.add_option("--generate", generate,
@@ -247,6 +247,7 @@ int main(int argc, char** argv) {
   bool perLevel = false;
   app.add_flag("--per-level", perLevel, "One row per NAME.L<n> pass instead of one NAME.L* sum per family");
   app.add_option("--device", deviceName, "Vulkan device name (substring)");
+  bounce::app::addPluginDirs(app, pluginDirs);
   std::string jsonPath;
   app.add_option("--json", jsonPath,
                  "Write the ceilings and, per size and variant, each pass's ms, work, ceiling and fraction");
@@ -278,6 +279,7 @@ int main(int argc, char** argv) {
   bounce::EngineOptions options;
   options.userIni = std::filesystem::path();  // reproducible: no per-user settings
   options.sets = sets;
+  options.pluginDirs.assign(pluginDirs.begin(), pluginDirs.end());
   options.technique = technique;
   options.keepGoing = keepGoing;
   bounce::Engine engine(std::move(options));

@@ -4,6 +4,7 @@
 //       [--frames N] [--ini FILE]... [--set CVAR=VALUE]...
 //       [--out FILE.png] [--aov NAME=FILE.exr]... [--stats FILE.json]
 //       [--device NAME] [--print-graph] [--graph-json FILE] [--keep-going]
+//       [--plugin-dir DIR]...
 //
 // AOVs (linear float OpenEXR): radiance, direct, indirect-irradiance, albedo, normal,
 // depth. The camera is the scene's first camera; the aspect ratio comes from W/H.
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
   std::string scenePath, technique, outPath, statsPath, graphJson, deviceName;
   uint32_t width = 512, height = 512, frames = 1;
   bool printGraph = false, keepGoing = false;
-  std::vector<std::string> inis, sets, aovArgs, enable, disable;
+  std::vector<std::string> inis, sets, aovArgs, enable, disable, pluginDirs;
   app.add_option("--scene", scenePath, "glTF scene to load")->required();
   app.add_option("--gi", technique, "GI technique: a GlobalIllumination plugin's name, or none");
   app.add_option("--width", width, "Output width in pixels")->check(CLI::Range(1u, 16384u));
@@ -67,6 +68,7 @@ int main(int argc, char** argv) {
   app.add_option("--device", deviceName, "Use the Vulkan device whose name contains this ($BOUNCE_DEVICE)");
   app.add_option("--enable-plugin", enable, "Enable a plugin (repeatable)");
   app.add_option("--disable-plugin", disable, "Disable a plugin (repeatable)");
+  bounce::app::addPluginDirs(app, pluginDirs);
   app.add_flag("--print-graph", printGraph, "Print the compiled render graph of the last frame");
   app.add_option("--graph-json", graphJson, "Write the compiled graph report as JSON");
   bounce::app::addKeepGoing(app, keepGoing);
@@ -80,6 +82,7 @@ int main(int argc, char** argv) {
   options.sets = sets;
   options.enablePlugins = enable;
   options.disablePlugins = disable;
+  options.pluginDirs.assign(pluginDirs.begin(), pluginDirs.end());
   options.technique = technique;
   options.keepGoing = keepGoing;
   bounce::Engine engine(std::move(options));

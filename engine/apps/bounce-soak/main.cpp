@@ -52,7 +52,7 @@ int fail(int status, const std::string& message) {
 
 struct Options {
   std::string scene = "content/cornell_box.gltf";
-  std::vector<std::string> techniques, sets;
+  std::vector<std::string> techniques, sets, pluginDirs;
   std::vector<std::string> inis{"config/Soak.ini"};  ///< replaced by any --ini
   uint32_t frames = 10000;
   uint32_t size = 64;
@@ -69,6 +69,7 @@ std::vector<std::string> availableTechniques(const Options& o, std::string* erro
   eo.userIni = std::filesystem::path();
   eo.iniFiles = o.inis;
   eo.sets = o.sets;
+  eo.pluginDirs.assign(o.pluginDirs.begin(), o.pluginDirs.end());
   bounce::Engine probe(std::move(eo));
   if (!probe.commandLineErrors().empty()) {
     *error = probe.commandLineErrors().front();
@@ -88,6 +89,7 @@ std::optional<bounce::soak::TechniqueSoak> soak(const Options& o, const std::str
   eo.userIni = std::filesystem::path();  // reproducible: no per-user settings
   eo.iniFiles = o.inis;
   eo.sets = o.sets;
+  eo.pluginDirs.assign(o.pluginDirs.begin(), o.pluginDirs.end());
   eo.technique = technique;
   bounce::Engine engine(std::move(eo));
   if (!engine.commandLineErrors().empty()) {
@@ -179,6 +181,7 @@ int main(int argc, char** argv) {
   app.add_option("--ini", o.inis, "Extra ini file (repeatable; replaces the default config/Soak.ini)");
   app.add_option("--set", o.sets, "Console variable NAME=VALUE for every technique (repeatable)");
   app.add_option("--device", o.device, "Vulkan device name (substring)");
+  bounce::app::addPluginDirs(app, o.pluginDirs);
   app.add_flag("--validation", o.validation, "Vulkan validation layer on; any message fails the run");
   app.add_option(
       "--max-rss-slope", o.limits.maxRssSlope,

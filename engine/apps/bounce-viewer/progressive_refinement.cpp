@@ -11,13 +11,65 @@ namespace {
 
 uint32_t lowResolution(uint32_t size, uint32_t factor) { return std::max(1u, (size + factor - 1) / factor); }
 
-/// The phase `index` of factor² jitters: a regular order over the cell, starting from the
-/// one nearest its centre so the first frame after a change is the least shifted.
-glm::uvec2 jitterAt(uint32_t index, uint32_t factor) {
+/// The order of the factor² jitters: each next phase is the one farthest from those taken
+/// (on the torus the cells tile), starting from the cell's centre. Any prefix of frames is
+/// then spread evenly over the cell: after 4 frames the exact pixels form a lattice about
+/// factor/2 apart, after n about factor/√n, which the fill below interpolates between.
+std::vector<glm::uvec2> jitterOrder(uint32_t factor) {
   const uint32_t cells = factor * factor;
-  const uint32_t centre = (factor / 2) * factor + factor / 2;
-  const uint32_t i = (centre + index) % cells;
-  return {i % factor, i / factor};
+  std::vector<glm::uvec2> order;
+  order.reserve(cells);
+  std::vector<uint32_t> nearest(cells, ~0u);  // squared toroidal distance to the taken ones
+  uint32_t next = (factor / 2) * factor + factor / 2;
+  for (uint32_t taken = 0; taken < cells; ++taken) {
+    const glm::uvec2 p{next % factor, next / factor};
+    order.push_back(p);
+    uint32_t farthest = 0, best = 0;
+    for (uint32_t i = 0; i < cells; ++i) {
+      const uint32_t dx =
+          std::min((i % factor + factor - p.x) % factor, (p.x + factor - i % factor) % factor);
+      const uint32_t dy =
+          std::min((i / factor + factor - p.y) % factor, (p.y + factor - i / factor) % factor);
+      nearest[i] = std::min(nearest[i], dx * dx + dy * dy);
+      if (nearest[i] > best) best = nearest[i], farthest = i;  // ties: the lowest index
+    }
+    next = farthest;
+  }
+  return order;
+}
+
+/// Box sums of s taps along x (`alongRows`) or y of a width × height image of `channels`
+/// floats per pixel, from `src` into `dst`: forward sums i .. i+s−1, backward i−s+1 .. i
+/// (clamped to the image). One of each makes the tent s − |d|, |d| < s. A sliding window
+/// in double (each term added and dropped once; enough for the whole-number weights). The
+/// y pass slides one window per column down the rows together, so it reads rows whole.
+void boxSums(const std::vector<float>& src, std::vector<float>& dst, uint32_t width, uint32_t height,
+             uint32_t channels, uint32_t s, bool forward, bool alongRows, std::vector<double>& window) {
+  dst.resize(src.size());
+  const uint32_t lines = alongRows ? height : 1, count = alongRows ? width : height;
+  const size_t lineSize = alongRows ? size_t(channels) : size_t(width) * channels;  // floats per step
+  window.resize(lineSize);
+  for (uint32_t l = 0; l < lines; ++l) {
+    const size_t first = size_t(l) * width * channels;
+    auto add = [&](uint32_t i, double sign) {
+      const float* p = &src[first + i * lineSize];
+      for (size_t k = 0; k < lineSize; ++k) window[k] += sign * double(p[k]);
+    };
+    std::fill(window.begin(), window.end(), 0.0);
+    if (forward)
+      for (uint32_t i = 0; i < std::min(count, s); ++i) add(i, 1.0);
+    for (uint32_t i = 0; i < count; ++i) {
+      if (!forward) add(i, 1.0);
+      float* out = &dst[first + i * lineSize];
+      for (size_t k = 0; k < lineSize; ++k) out[k] = float(window[k]);
+      if (forward) {
+        add(i, -1.0);
+        if (i + s < count) add(i + s, 1.0);
+      } else if (i + 1 >= s) {
+        add(i + 1 - s, -1.0);
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -55,9 +107,12 @@ void ProgressiveRefinement::reset(uint32_t width, uint32_t height, uint32_t fact
   frames_ = 0;
   known_.assign(size_t(width_) * height_, 0);
   exact_ = {};
+  if (order_.size() != size_t(factor_) * factor_) order_ = jitterOrder(factor_);
 }
 
-glm::uvec2 ProgressiveRefinement::nextJitter() const { return jitterAt(frames_, factor_); }
+glm::uvec2 ProgressiveRefinement::nextJitter() const {
+  return order_.empty() ? glm::uvec2(0) : order_[frames_ % order_.size()];
+}
 
 const ImageBuffer& ProgressiveRefinement::add(const ImageBuffer& frame) {
   const uint32_t c = std::max(1u, frame.channels);
@@ -84,10 +139,40 @@ const ImageBuffer& ProgressiveRefinement::add(const ImageBuffer& frame) {
   // viewport's pixels x·factor + j; rendered pixels are exact.
   const float step = 1.0f / float(factor_);
   shown_ = resampleBilinear(frame, width_, height_, -glm::vec2(j) * step, glm::vec2(step));
-  if (fits)
-    for (size_t i = 0; i < known_.size(); ++i)
-      if (known_[i]) std::copy_n(&exact_.pixels[i * c], c, &shown_.pixels[i * c]);
+  if (!fits) return shown_;
+  if (frames_ > 1 && frames_ < factor_ * factor_) fillFromExactPixels();
+  for (size_t i = 0; i < known_.size(); ++i)
+    if (known_[i]) std::copy_n(&exact_.pixels[i * c], c, &shown_.pixels[i * c]);
   return shown_;
+}
+
+void ProgressiveRefinement::fillFromExactPixels() {
+  // Normalized convolution: a tent of radius s over the exact pixels, divided by the tent's
+  // weight on them. With s the lattice spacing factor/√n this is bilinear interpolation on
+  // a regular lattice, and it uses every pixel rendered so far, not only the latest
+  // frame's: after n frames the fill interpolates samples about factor/√n apart instead
+  // of factor. Where no exact pixel lies within the tent, the latest frame's value stays.
+  const uint32_t c = exact_.channels, w = width_, h = height_;
+  const uint32_t radius = std::max(1u, uint32_t(std::ceil(float(factor_) / std::sqrt(float(frames_)))));
+  const uint32_t n = c + 1;  // the channels, premultiplied by the weight, then the weight
+  weighted_.assign(size_t(w) * h * n, 0.0f);
+  for (size_t i = 0; i < known_.size(); ++i)
+    if (known_[i]) {
+      std::copy_n(&exact_.pixels[i * c], c, &weighted_[i * n]);
+      weighted_[i * n + c] = 1.0f;
+    }
+  for (bool alongRows : {true, false})
+    for (bool forward : {true, false}) {
+      boxSums(weighted_, scratch_, w, h, n, radius, forward, alongRows, window_);
+      std::swap(weighted_, scratch_);
+    }
+  for (size_t i = 0; i < known_.size(); ++i) {
+    const float* sum = &weighted_[i * n];
+    // Weights are whole numbers (products of tent weights): below 0.5 means no exact pixel
+    // in reach, and the latest frame's value stays.
+    if (sum[c] < 0.5f) continue;
+    for (uint32_t k = 0; k < c; ++k) shown_.pixels[i * c + k] = sum[k] / sum[c];
+  }
 }
 
 }  // namespace bounce::viewer

@@ -5,9 +5,10 @@
 // a sub-pixel "jitter" (jx, jy) ∈ {0..factor−1}², so that its pixel (x, y) lands exactly on
 // the viewport's pixel (x·factor + jx, y·factor + jy). While nothing changes, each frame
 // takes the next jitter and its pixels are kept; after factor² frames every viewport pixel
-// has been rendered exactly, as a full-resolution frame would have. Pixels not rendered
-// yet show the latest frame, upscaled. Any change (camera, settings, scene, size) starts
-// over, so a moving camera shows its latest frame at once.
+// has been rendered exactly, as a full-resolution frame would have. The jitters come in
+// an order that spreads any prefix over the cell, and pixels not rendered yet are
+// interpolated from all those rendered so far (the first frame: upscaled bilinearly). Any change (camera,
+// settings, scene, size) starts over, so a moving camera shows its latest frame at once.
 
 #include "bounce/frame/frame_context.h"
 #include "bounce/image/image_buffer.h"
@@ -45,6 +46,11 @@ class ProgressiveRefinement {
   ImageBuffer exact_;           ///< pixels rendered exactly so far
   std::vector<uint8_t> known_;  ///< 1 where exact_ holds a rendered value
   ImageBuffer shown_;
+  std::vector<glm::uvec2> order_;          ///< the factor² jitters, in the order frames take them
+  std::vector<float> weighted_, scratch_;  ///< the fill's buffers, kept between frames
+  std::vector<double> window_;
+
+  void fillFromExactPixels();
 };
 
 }  // namespace bounce::viewer

@@ -94,6 +94,7 @@ int Viewer::open() {
   eo.sets = options_.sets;
   eo.enablePlugins = options_.enablePlugins;
   eo.disablePlugins = options_.disablePlugins;
+  eo.pluginDirs.assign(options_.pluginDirs.begin(), options_.pluginDirs.end());
   eo.technique = options_.technique;
   eo.keepGoing = options_.keepGoing;
   engine_ = std::make_unique<Engine>(std::move(eo));

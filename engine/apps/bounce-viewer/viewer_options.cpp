@@ -17,6 +17,7 @@ std::optional<ViewerOptions> parseViewerOptions(int argc, char** argv, int* exit
   app.add_option("--set", o.sets, "Console variable NAME=VALUE at command-line priority (repeatable)");
   app.add_option("--enable-plugin", o.enablePlugins, "Enable a plugin (repeatable)");
   app.add_option("--disable-plugin", o.disablePlugins, "Disable a plugin (repeatable)");
+  app::addPluginDirs(app, o.pluginDirs);
   app.add_option(
       "--script", o.script,
       "Run console lines and viewer actions (frames N, screenshot FILE.png, camera ..., ui on|off, quit)");

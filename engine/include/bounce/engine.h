@@ -25,7 +25,8 @@ namespace bounce {
 
 struct EngineOptions {
   /// Repository/project root holding config/ (and content/). Empty: $BOUNCE_ROOT, else
-  /// the nearest parent of the executable with config/BaseEngine.ini.
+  /// <exe>/../share/bounce (an installed SDK), else the nearest parent of the executable
+  /// with config/BaseEngine.ini.
   std::filesystem::path root;
   /// The user's ini. nullopt: $BOUNCE_USER_INI, else ~/.config/bounce/UserEngine.ini.
   /// An empty path: no user ini (tests, reproducible benchmarks).
@@ -34,9 +35,11 @@ struct EngineOptions {
   std::vector<std::string> sets;      ///< `-set NAME=VALUE`, at command-line priority
   std::vector<std::string> enablePlugins;
   std::vector<std::string> disablePlugins;
-  std::vector<std::filesystem::path> pluginDirs;  ///< searched before the defaults
-  bool defaultPluginDirs = true;                  ///< also search <exe>/../plugins and $BOUNCE_PLUGIN_PATH
-  std::string technique;                          ///< `--gi NAME`: selects (and enables) a GI technique
+  std::vector<std::filesystem::path> pluginDirs;  ///< `--plugin-dir`: searched first, in order
+  /// Also search $BOUNCE_PLUGIN_PATH, [Plugins] SearchPaths= and the plugins beside the
+  /// executable (<exe>/../plugins in a build, <exe>/../lib/bounce/plugins installed).
+  bool defaultPluginDirs = true;
+  std::string technique;  ///< `--gi NAME`: selects (and enables) a GI technique
   /// `--keep-going`: bad values or unknown keys in `-ini` files, and explicitly requested
   /// plugins (`--enable-plugin`, the `--gi` technique's) that fail to start, are reported
   /// and skipped instead of being command-line errors.

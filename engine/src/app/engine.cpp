@@ -3,6 +3,7 @@
 #include "bounce/core/log.h"
 #include "bounce/core/names.h"
 #include "bounce/graph/channels.h"
+#include "plugin/plugin_search_path.h"
 
 #include <fmt/format.h>
 
@@ -54,6 +55,18 @@ fs::path defaultUserIni() {
   return {};
 }
 
+// The apps' defaults ("content/cornell_box.gltf", bounce-soak's "config/Soak.ini") are
+// named relative to the root, and an installed app runs from anywhere: a relative path that
+// is not there from the working directory is taken from the root when it is there.
+fs::path fromWorkingDirectoryOrRoot(const fs::path& path, const fs::path& root) {
+  std::error_code ec;
+  if (path.is_absolute() || fs::exists(path, ec) || !fs::exists(root / path, ec)) return path;
+  return root / path;
+}
+
+// [Plugins] SearchPaths=DIR:DIR: more folders to find plugins in (plugin_search_path.h).
+constexpr std::string_view kSearchPathsKey = "SearchPaths";
+
 std::optional<bool> parsePluginSwitch(std::string_view text) {
   std::string t = toLower(text);
   if (t == "true" || t == "1" || t == "on" || t == "yes") return true;
@@ -70,6 +83,11 @@ fs::path Engine::locateRoot(const fs::path& hint) const {
   };
   if (!hint.empty()) return hint;
   if (const char* env = std::getenv("BOUNCE_ROOT"); env && hasConfig(env)) return env;
+  // An installed SDK (docs/architecture.md, "The SDK"), before the parents: a prefix
+  // inside a source tree must not pick up that tree.
+  if (const fs::path installed = executableDirectory().parent_path() / "share" / "bounce";
+      hasConfig(installed))
+    return installed;
   for (fs::path p = executableDirectory(); !p.empty(); p = p.parent_path()) {
     if (hasConfig(p)) return p;
     if (p == p.parent_path()) break;
@@ -83,6 +101,7 @@ fs::path Engine::locateRoot(const fs::path& hint) const {
 Engine::Engine(EngineOptions options) {
   root_ = locateRoot(options.root);
   keepGoing_ = options.keepGoing;
+  for (std::string& ini : options.iniFiles) ini = fromWorkingDirectoryOrRoot(ini, root_).string();
   iniOptions_ = options.iniFiles;
 
   // 1. Configuration layers, lowest priority first.
@@ -95,18 +114,18 @@ Engine::Engine(EngineOptions options) {
 
   // 2. Plugins are discovered first so that r.GI.Technique can be validated.
   plugins_ = std::make_unique<PluginHost>(services_);
-  std::vector<fs::path> dirs = options.pluginDirs;
+  PluginSearchPathSources search{.commandLine = options.pluginDirs};
   if (options.defaultPluginDirs) {
-    if (const char* env = std::getenv("BOUNCE_PLUGIN_PATH")) {
-      std::string_view list(env);
-      while (!list.empty()) {
-        size_t colon = list.find(':');
-        if (colon) dirs.emplace_back(std::string(list.substr(0, colon)));
-        list = colon == std::string_view::npos ? std::string_view{} : list.substr(colon + 1);
-      }
+    if (const char* env = std::getenv("BOUNCE_PLUGIN_PATH")) search.environment = env;
+    if (const ConfigStack::Value* v = config_.find("Plugins", kSearchPathsKey)) {
+      search.ini = v->text;
+      search.iniSource = v->source;
     }
-    dirs.push_back(executableDirectory().parent_path() / "plugins");
+    const fs::path prefix = executableDirectory().parent_path();
+    search.defaults = {prefix / "plugins", prefix / "lib" / "bounce" / "plugins"};
   }
+  std::vector<fs::path> dirs;
+  for (const PluginSearchFolder& folder : resolvePluginSearchPath(search)) dirs.push_back(folder.path);
   plugins_->discover(dirs);
 
   // 3. Engine variables, then ini values and the command line on top of them.
@@ -126,6 +145,7 @@ Engine::Engine(EngineOptions options) {
   PluginHost::Enablement enablement;
   if (const std::vector<std::string> keys = config_.keys("Plugins"); !keys.empty()) {
     for (const std::string& key : keys) {
+      if (equalsIgnoreCase(key, kSearchPathsKey)) continue;  // where to look, not a plugin's name
       const ConfigStack::Value* v = config_.find("Plugins", key);
       if (auto on = parsePluginSwitch(v->text))
         enablement.config[toLower(key)] = *on;
@@ -335,7 +355,7 @@ SceneExtrasSchema Engine::extrasSchema() const {
 
 GltfLoadResult Engine::loadScene(const fs::path& path) {
   SceneExtrasSchema schema = extrasSchema();
-  GltfLoadResult result = loadGltf(path.string(), &schema);
+  GltfLoadResult result = loadGltf(fromWorkingDirectoryOrRoot(path, root_).string(), &schema);
   if (result.scene) {
     scene_ = std::move(result.scene);
     events_.sceneLoaded.emit({*scene_, path.string()});

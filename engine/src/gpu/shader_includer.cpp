@@ -29,7 +29,8 @@ ShaderIncluder::ShaderIncluder(fs::path root, std::vector<fs::path> includeDirs)
 ShaderIncluder::~ShaderIncluder() = default;
 
 void ShaderIncluder::addSource(const std::string& name, const fs::path& folder) {
-  folderByName_[name] = fs::absolute(folder).lexically_normal();
+  sourceFolder_ = fs::absolute(folder).lexically_normal();
+  folderByName_[name] = sourceFolder_;
 }
 
 std::string ShaderIncluder::displayName(const fs::path& file) const {
@@ -41,7 +42,7 @@ std::string ShaderIncluder::displayName(const fs::path& file) const {
 ShaderIncluder::IncludeResult* ShaderIncluder::includeLocal(const char* header, const char* includer,
                                                             size_t depth) {
   lastLocalHeader_.clear();
-  lastLocalFolder_.clear();
+  lastLocalFolders_.clear();
   if (depth > kMaxDepth) {
     return fail(
         fmt::format("includes nest deeper than {} levels (an include cycle without a guard?)", kMaxDepth));
@@ -49,9 +50,12 @@ ShaderIncluder::IncludeResult* ShaderIncluder::includeLocal(const char* header, 
   auto found = folderByName_.find(includer);
   if (found == folderByName_.end()) return nullptr;
   lastLocalHeader_ = header;
-  lastLocalFolder_ = found->second;
+  lastLocalFolders_.push_back(found->second);
+  if (!sourceFolder_.empty() && sourceFolder_ != found->second) lastLocalFolders_.push_back(sourceFolder_);
+  for (const fs::path& folder : lastLocalFolders_)
+    if (IncludeResult* result = tryFolder(folder, header)) return result;
   // nullptr (not a failure result) so that glslang goes on to includeSystem.
-  return tryFolder(found->second, header);
+  return nullptr;
 }
 
 ShaderIncluder::IncludeResult* ShaderIncluder::includeSystem(const char* header, const char* /*includer*/,
@@ -64,8 +68,8 @@ ShaderIncluder::IncludeResult* ShaderIncluder::includeSystem(const char* header,
     if (IncludeResult* result = tryFolder(dir, header)) return result;
   }
   std::vector<std::string> searched;
-  if (lastLocalHeader_ == header && !lastLocalFolder_.empty())
-    searched.push_back(displayName(lastLocalFolder_));
+  if (lastLocalHeader_ == header)
+    for (const fs::path& folder : lastLocalFolders_) searched.push_back(displayName(folder));
   for (const fs::path& dir : includeDirs_) searched.push_back(displayName(dir));
   return fail(fmt::format(
       "cannot find \"{}\" (searched {})", header,

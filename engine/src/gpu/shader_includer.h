@@ -1,9 +1,12 @@
 #pragma once
-// Resolves #include "…" for glslang: the including file's folder first, then the
-// compiler's include dirs in order (<…> searches only the include dirs). It records
-// every file it opens, for hot reload, and keeps each file's text so that the second
-// pass over a shader (parse after preprocess) sees exactly the text the cache key was
-// computed from, even if a file changes in between.
+// Resolves #include "…" for glslang: the including file's folder first, then the folder of
+// the shader being compiled (for a plugin: its shaders/ folder, so nested files include
+// each other by the same names as the top-level shader does), then the compiler's include
+// dirs in order, the engine's GLSL library (<…> searches only the include dirs). A plugin's
+// own files therefore come before the engine's. It records every file it opens, for hot
+// reload, and keeps each file's text so that the second pass over a shader (parse after
+// preprocess) sees exactly the text the cache key was computed from, even if a file
+// changes in between.
 
 #include <glslang/Public/ShaderLang.h>
 
@@ -30,7 +33,7 @@ class ShaderIncluder final : public glslang::TShader::Includer {
   ShaderIncluder& operator=(const ShaderIncluder&) = delete;
 
   /// Declares the main source: glslang knows it as `name`, and its relative includes
-  /// resolve in `folder`.
+  /// resolve in `folder` (and nested files' includes there after their own folder).
   void addSource(const std::string& name, const std::filesystem::path& folder);
 
   IncludeResult* includeLocal(const char* header, const char* includer, size_t depth) override;
@@ -62,10 +65,11 @@ class ShaderIncluder final : public glslang::TShader::Includer {
   std::map<std::filesystem::path, std::string> contents_;
   std::vector<std::filesystem::path> files_;
   std::vector<std::unique_ptr<Opened>> open_;
-  // The folder includeLocal searched last, so that a failure reported by
+  // The folders includeLocal searched last, so that a failure reported by
   // includeSystem (which glslang calls next) can list every place looked in.
   std::string lastLocalHeader_;
-  std::filesystem::path lastLocalFolder_;
+  std::vector<std::filesystem::path> lastLocalFolders_;
+  std::filesystem::path sourceFolder_;  // the main source's folder
 };
 
 }  // namespace bounce::gpu

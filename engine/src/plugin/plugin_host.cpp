@@ -39,8 +39,12 @@ PluginHost::~PluginHost() { unloadAll(); }
 
 void PluginHost::discover(const std::vector<std::filesystem::path>& roots) {
   namespace fs = std::filesystem;
-  auto consider = [&](const fs::path& file) {
-    if (file.extension() != ".bplugin") return;
+  auto consider = [&](const fs::path& found) {
+    if (found.extension() != ".bplugin") return;
+    // Absolute: plugins name their shaders and content relative to their folder
+    // (PluginContext::shaderPath), and a relative folder would mean the working directory.
+    std::error_code absoluteError;
+    const fs::path file = fs::absolute(found, absoluteError).lexically_normal();
     std::string error;
     std::optional<PluginDescriptor> d = PluginDescriptor::load(file, &error);
     if (!d) {
@@ -48,8 +52,11 @@ void PluginHost::discover(const std::vector<std::filesystem::path>& roots) {
       return;
     }
     if (const PluginDescriptor* existing = descriptor(d->name)) {
-      log::warn("{}: plugin '{}' is already provided by {}; ignoring this one", file.string(), d->name,
-                existing->file.string());
+      // Documented precedence: the first folder on the search path wins, so a plugin built
+      // in development (--plugin-dir) replaces an installed one of the same name.
+      log::warn(
+          "{}: plugin '{}' is already provided by {}, earlier on the plugin search path; ignoring this one",
+          file.string(), d->name, existing->file.string());
       return;
     }
     available_.push_back(std::move(*d));

@@ -5,6 +5,7 @@
 #include "bounce/gpu/pass_context.h"
 #include "bounce/graph/channels.h"
 #include "renderer/light_setup.h"
+#include "renderer/shadow_map_cache.h"
 
 #include <fmt/format.h>
 
@@ -37,7 +38,8 @@ struct BloomPush {
 
 struct TonemapPush {
   uint32_t width, height, op, hasBloom;
-  float exposure, bloomIntensity;
+  float exposure, bloomIntensity, bloomThreshold;
+  float bloomSkippedLevels;  ///< levels of the output's chain finer than the render
 };
 
 // Copies vkCmdUpdateBuffer can take: 64 KiB per call, in multiples of 4 bytes.
@@ -53,7 +55,7 @@ constexpr uint32_t kBloomMips = 5;
 
 DeferredPipeline::DeferredPipeline(const RendererSettings& settings, const AovRegistry& aovs,
                                    const gpu::Device* device)
-    : settings_(settings), aovs_(aovs), device_(device) {
+    : settings_(settings), aovs_(aovs), device_(device), shadowCache_(std::make_unique<ShadowMapCache>()) {
   if (!device) return;
   // What the lighting pass samples as shadow maps when no light casts shadows (the
   // flag tells it to ignore them, but the binding must still be a depth array).
@@ -117,22 +119,34 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
 
   const uint32_t layers = lights->shadowLayers();
   const float slopeBias = settings_.shadowDepthBias.get();
+  // Without shadow-casting lights the maps are one cleared 1×1 layer (depth 1: lit), so a
+  // reader always binds a depth array, whatever the scene.
+  const TextureDesc desc{.type = TextureType::Tex2DArray,
+                         .format = VK_FORMAT_D32_SFLOAT,
+                         .width = layers ? mapSize : 1u,
+                         .height = layers ? mapSize : 1u,
+                         .layers = std::max(1u, layers)};
+  ShadowMapCache& cache = *shadowCache_;
+  const uint64_t key = ShadowMapCache::key(frame.scene, lights->shadowMatrices, mapSize, slopeBias);
+  TextureHandle maps = g.importTexture(cache.maps(desc));  // first: a new size re-creates them
+  const bool cached = settings_.cacheShadowMaps.get() && cache.holds(key);
+  const uint64_t frameIndex = frame.frameIndex;
+  bb.setTexture(channels::ShadowMaps, maps);
   g.addPass("ShadowMaps", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
-    // Without shadow-casting lights the maps are one cleared 1×1 layer (depth 1: lit),
-    // so a reader always binds a depth array, whatever the scene.
-    TextureDesc desc{.type = TextureType::Tex2DArray,
-                     .format = VK_FORMAT_D32_SFLOAT,
-                     .width = layers ? mapSize : 1u,
-                     .height = layers ? mapSize : 1u,
-                     .layers = std::max(1u, layers)};
-    TextureHandle maps =
-        b.write(b.createTexture(std::string(channels::ShadowMaps), desc), Access::DepthAttachment);
+    maps = b.write(maps, Access::DepthAttachment);
     bb.setTexture(channels::ShadowMaps, maps);
-    b.condition([layers] {
+    const uint64_t drawnAt = cache.drawnAt();
+    b.condition([layers, cached, drawnAt] {
+      if (cached)
+        return PassDecision::skip(fmt::format(
+            "shadow maps unchanged since frame {} (static geometry, still lights; r.Shadow.CacheStaticMaps)",
+            drawnAt));
       return PassDecision::run(layers ? fmt::format("{} shadow-map layers", layers)
                                       : std::string("no shadow-casting lights: one cleared 1×1 layer"));
     });
+    ShadowMapCache* drawn = &cache;
     return [=](PassContext& ctx) {
+      drawn->drawn(key, frameIndex);
       if (layers == 0) {
         ctx.beginRendering({.depth = DepthTarget{maps, 1.0f}, .layer = 0u});
         ctx.endRendering();
@@ -290,15 +304,21 @@ void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) co
   const float threshold = frame.setting(settings_.bloomThreshold);
   const float exposure = std::exp2(frame.setting(settings_.exposure));
   const uint32_t width = frame.view.width, height = frame.view.height;
+  // The chain is the one a full-resolution render would have, from half the *output*
+  // size: bloom's radius is then the same fraction of the image whatever
+  // r.ScreenPercentage or dynamic resolution render at (a 10% render would otherwise
+  // bloom ten times wider once upscaled). Its levels finer than the render would hold
+  // the bright light blurred by less than a render pixel: a small render skips them (at
+  // 10% they were 3/4 of bloom's cost) and tonemap adds each one's share per pixel.
+  const float renderScale = std::clamp(frame.view.renderScale, 1e-3f, 1.0f);
+  const uint32_t skipped =
+      std::min(kBloomMips - 2, uint32_t(std::max(0.0f, std::floor(std::log2(0.5f / renderScale)))));
   TextureHandle bloomTexture;
   g.addPass("Bloom", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     TextureHandle hdr = b.read(bb.texture(channels::SceneColor), Access::Sampled);
-    // The chain starts at half the *output* size, not the render's: bloom's radius is then
-    // the same fraction of the image whatever r.ScreenPercentage or dynamic resolution
-    // render at (a 10% render would otherwise bloom ten times wider once upscaled).
-    const float outputScale = 0.5f / std::clamp(frame.view.renderScale, 1e-3f, 1.0f);
-    TextureDesc desc = TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, outputScale);
-    desc.mips = kBloomMips;
+    TextureDesc desc =
+        TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT, 0.5f / renderScale / float(1u << skipped));
+    desc.mips = kBloomMips - skipped;
     bloomTexture = b.write(b.createTexture("Bloom", desc), Access::StorageReadWrite);
     b.read(bloomTexture, Access::Sampled);  // each step samples the mip the previous one wrote
     b.condition([bloom] {
@@ -344,7 +364,8 @@ void DeferredPipeline::postProcess(RenderGraph& g, const FrameContext& frame) co
     bb.setTexture(channels::SceneColorLdr, ldr);
     return [=](PassContext& ctx) {
       const bool hasBloom = ctx.available(bloomIn);
-      TonemapPush p{width, height, uint32_t(op), hasBloom ? 1u : 0u, exposure, bloom};
+      TonemapPush p{width,    height, uint32_t(op), hasBloom ? 1u : 0u,
+                    exposure, bloom,  threshold,    float(skipped)};
       gpu::Bindings bind;
       bind.texture("hdr", hdr, gpu::SamplerKind::NearestClamp).texture("bloom", bloomIn).storage("ldr", ldr);
       ctx.dispatchThreads(ctx.pipelines().compute(shader("tonemap.comp")), bind, {width, height, 1}, p);

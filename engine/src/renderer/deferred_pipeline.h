@@ -17,6 +17,8 @@
 
 namespace bounce {
 
+class ShadowMapCache;
+
 /// Host-visible copies of frame textures, filled by read-back passes.
 struct Readback {
   std::unique_ptr<gpu::Buffer> buffer;
@@ -60,6 +62,8 @@ class DeferredPipeline {
   const AovRegistry& aovs_;
   const gpu::Device* device_;
   std::unique_ptr<gpu::Image> noShadows_;
+  /// Frame-to-frame state behind the const stages: the shadow maps a static scene keeps.
+  std::unique_ptr<ShadowMapCache> shadowCache_;
 };
 
 }  // namespace bounce

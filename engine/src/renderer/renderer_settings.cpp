@@ -110,6 +110,12 @@ RendererSettings::RendererSettings(CVarRegistry& cvars)
                             .min = 5.0,
                             .max = 200.0,
                             .outOfRange = RangePolicy::Clamp,
-                            .category = "Renderer|Resolution"})) {}
+                            .category = "Renderer|Resolution"})),
+      cacheShadowMaps(cvars.add<bool>(
+          {.name = "r.Shadow.CacheStaticMaps",
+           .defaultValue = true,
+           .help = "Keep shadow maps from frame to frame while the scene's geometry, transforms and shadow "
+                   "matrices stay the same (0: draw them every frame).",
+           .category = "Renderer|Shadows"})) {}
 
 }  // namespace bounce

@@ -14,12 +14,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <filesystem>
 
 namespace bounce::ambient {
 
 class AmbientPlugin final : public Plugin {
  public:
   void startup(PluginContext& ctx) override {
+    // Absolute paths into this plugin's folder: it finds its shaders wherever it is installed.
+    vertexShader_ = ctx.shaderPath("ambient.vert");
+    fragmentShader_ = ctx.shaderPath("ambient.frag");
     intensity_ = ctx.addCVar<float>(
         {.name = "r.Ambient.Intensity",
          .defaultValue = 0.25f,
@@ -79,6 +83,7 @@ class AmbientPlugin final : public Plugin {
     for (const Material& m : frame.scene.materials()) receives.push_back(receives_.of(m));
     const size_t receiving = size_t(std::count(receives.begin(), receives.end(), true));
     const glm::mat4 viewProjection = frame.view.viewProjection;
+    const std::filesystem::path vertexShader = vertexShader_, fragmentShader = fragmentShader_;
 
     Blackboard& bb = graph.blackboard();
     graph.addPass("Ambient.Irradiance", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
@@ -97,8 +102,8 @@ class AmbientPlugin final : public Plugin {
       });
       return [=](PassContext& ctx) {
         gpu::GraphicsPipelineDesc pd;
-        pd.vertex = {"plugins/ambient/shaders/ambient.vert", {}};
-        pd.fragment = gpu::ShaderSource{"plugins/ambient/shaders/ambient.frag", {}};
+        pd.vertex = {vertexShader, {}};
+        pd.fragment = gpu::ShaderSource{fragmentShader, {}};
         pd.colorFormats = {VK_FORMAT_R16G16B16A16_SFLOAT};
         pd.depthFormat = VK_FORMAT_D32_SFLOAT;
         pd.depthWrite = false;  // test against the G-buffer's depth: only visible surfaces
@@ -125,6 +130,7 @@ class AmbientPlugin final : public Plugin {
     });
   }
 
+  std::filesystem::path vertexShader_, fragmentShader_;
   CVarRef<float> intensity_;
   CVarRef<int32_t> debugMode_;
   ObjectParameter<bool> receives_;

@@ -15,10 +15,10 @@ namespace bounce::ddgi {
 
 namespace {
 
-constexpr const char* kShaders = "plugins/ddgi/shaders/";
-
-gpu::ShaderSource shader(const char* file, std::vector<std::pair<std::string, std::string>> defines = {}) {
-  return {std::string(kShaders) + file, std::move(defines)};
+// `shaders`: the plugin's shaders/ folder (PluginContext::shaderFolder).
+gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file,
+                         std::vector<std::pair<std::string, std::string>> defines = {}) {
+  return {shaders / file, std::move(defines)};
 }
 
 // Whether anything bounces: every DDGI pass has this condition, so the report says the same
@@ -39,8 +39,9 @@ void addConditions(PassBuilder& b, const VolumePlan& plan) {
 
 }  // namespace
 
-VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const ProbeTextures& textures,
-                            const ProbeHandles& imported, const std::string& suffix) {
+VolumeFrame addUpdatePasses(RenderGraph& graph, const std::filesystem::path& shaders, const VolumePlan& plan,
+                            const ProbeTextures& textures, const ProbeHandles& imported,
+                            const std::string& suffix) {
   Blackboard& bb = graph.blackboard();
   VolumeFrame out;
   out.probes = imported;
@@ -86,7 +87,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
         bind.storage("irradianceAtlas", h.irradiance)
             .storage("distanceAtlas", h.distance)
             .storage("probeData", h.probeData);
-        ctx.dispatchThreads(ctx.pipelines().compute(shader("reset.comp", defines)), bind, extent);
+        ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "reset.comp", defines)), bind, extent);
       };
     });
   }
@@ -117,7 +118,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
             .storage("irradianceAtlas", h.irradiance)
             .storage("distanceAtlas", h.distance)
             .storage("probeData", h.probeData);
-        ctx.dispatchThreads(ctx.pipelines().compute(shader("reset.comp", defines)), bind,
+        ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "reset.comp", defines)), bind,
                             {probeCount * texels, texels, 1}, push);
       };
     });
@@ -142,7 +143,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
       bind.buffer("SceneLights", lights.lights);
       bindProbesSampled(bind, h);
       bindRayTracingScene(bind, rt);
-      ctx.dispatchThreads(ctx.pipelines().compute(shader("trace.comp")), bind,
+      ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "trace.comp")), bind,
                           {uint32_t(std::max<uint64_t>(rayCount, 1)), 1, 1});
       // The probe rays dispatched (bounce-render-bench reports the rate); the shadow rays
       // at their hits, one per light, are not counted.
@@ -172,7 +173,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
         bind.buffer("DdgiVolume", volume).buffer("DdgiRays", raysIn);
         bind.texture("ddgiProbeData", data, gpu::SamplerKind::NearestClamp).storage("atlas", atlas);
         // One workgroup of T×T invocations per probe.
-        ctx.dispatchThreads(ctx.pipelines().compute(shader("blend.comp", defines)), bind,
+        ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "blend.comp", defines)), bind,
                             {probes * texels, texels, 1});
       };
     });
@@ -193,7 +194,7 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
       return [=](PassContext& ctx) {
         gpu::Bindings bind;
         bind.buffer("DdgiVolume", volume).buffer("DdgiRays", raysIn).storage("probeData", data);
-        ctx.dispatchThreads(ctx.pipelines().compute(shader("probe_states.comp", defines)), bind,
+        ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "probe_states.comp", defines)), bind,
                             {probes, 1, 1});
       };
     });
@@ -205,8 +206,8 @@ VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const Pr
   return out;
 }
 
-void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::vector<GatherSource>& sources,
-                     uint32_t k) {
+void addGatherPasses(RenderGraph& graph, const std::filesystem::path& shaders, const FrameContext& frame,
+                     const std::vector<GatherSource>& sources, uint32_t k) {
   if (sources.empty()) return;
   Blackboard& bb = graph.blackboard();
   struct GatherPush {
@@ -247,7 +248,7 @@ void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::v
             .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
             .storage("outIrradiance", out);
         if (accumulate) bind.texture("previousSum", previous, gpu::SamplerKind::NearestClamp);
-        ctx.dispatchThreads(ctx.pipelines().compute(shader("gather.comp", defines)), bind,
+        ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "gather.comp", defines)), bind,
                             {gatheredSize.x, gatheredSize.y, 1}, push);
       };
     });
@@ -268,14 +269,14 @@ void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::v
           .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
           .texture("gathered", low, gpu::SamplerKind::NearestClamp)
           .storage("outIrradiance", out);
-      ctx.dispatchThreads(ctx.pipelines().compute(shader("upsample.comp")), bind,
+      ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "upsample.comp")), bind,
                           {push.size.x, push.size.y, 1}, push);
     };
   });
 }
 
-void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
-                  const VolumeFrame& volume, uint32_t mode, float probeRadius) {
+void addDebugPass(RenderGraph& graph, const std::filesystem::path& shaders, const FrameContext& frame,
+                  const VolumePlan& plan, const VolumeFrame& volume, uint32_t mode, float probeRadius) {
   Blackboard& bb = graph.blackboard();
   struct DebugPush {
     glm::mat4 inverseViewProjection;
@@ -307,8 +308,8 @@ void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePla
       bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
           .texture("sceneColor", scene, gpu::SamplerKind::NearestClamp)
           .storage("outDebug", out);
-      ctx.dispatchThreads(ctx.pipelines().compute(shader("debug.comp")), bind, {push.size.x, push.size.y, 1},
-                          push);
+      ctx.dispatchThreads(ctx.pipelines().compute(shader(shaders, "debug.comp")), bind,
+                          {push.size.x, push.size.y, 1}, push);
     };
   });
 }

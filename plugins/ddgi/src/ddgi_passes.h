@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -60,8 +61,9 @@ struct VolumeFrame {
 
 /// The update passes of one volume; `suffix` follows every pass name (" [Hall]" when a
 /// scene has several volumes, "" for one).
-VolumeFrame addUpdatePasses(RenderGraph& graph, const VolumePlan& plan, const ProbeTextures& textures,
-                            const ProbeHandles& imported, const std::string& suffix);
+VolumeFrame addUpdatePasses(RenderGraph& graph, const std::filesystem::path& shaders, const VolumePlan& plan,
+                            const ProbeTextures& textures, const ProbeHandles& imported,
+                            const std::string& suffix);
 /// What a gather pass needs of one volume.
 struct GatherSource {
   const VolumePlan* plan;
@@ -72,11 +74,11 @@ struct GatherSource {
 /// adding its weighted irradiance to the previous one's sum; the last normalises (E =
 /// Σ wᵢEᵢ / max(Σ wᵢ, 1): overlapping volumes average, a lone volume's edge fades), then
 /// DDGI.Upsample when k > 1.
-void addGatherPasses(RenderGraph& graph, const FrameContext& frame, const std::vector<GatherSource>& sources,
-                     uint32_t k);
+void addGatherPasses(RenderGraph& graph, const std::filesystem::path& shaders, const FrameContext& frame,
+                     const std::vector<GatherSource>& sources, uint32_t k);
 /// DDGI.Debug: r.DDGI.DebugMode 2..7 (probe spheres, states, ray hits, atlases) as the
 /// DebugView channel. `probeRadius` is in metres.
-void addDebugPass(RenderGraph& graph, const FrameContext& frame, const VolumePlan& plan,
-                  const VolumeFrame& volume, uint32_t mode, float probeRadius);
+void addDebugPass(RenderGraph& graph, const std::filesystem::path& shaders, const FrameContext& frame,
+                  const VolumePlan& plan, const VolumeFrame& volume, uint32_t mode, float probeRadius);
 
 }  // namespace bounce::ddgi

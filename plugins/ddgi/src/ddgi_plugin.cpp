@@ -43,6 +43,7 @@ class DdgiPlugin final : public Plugin {
  public:
   void startup(PluginContext& ctx) override {
     settings_.declare(ctx);
+    shaders_ = ctx.shaderFolder();
     ctx.addSceneVolumeKind({.name = kVolumeKind,
                             .help =
                                 "A box of DDGI probes: the node's transform of [-1,1]³; fields override the "
@@ -106,7 +107,8 @@ class DdgiPlugin final : public Plugin {
       VolumeFrameState f;
       f.plan = volume.plan(frame, specs_[i], settings_, lighting);
       f.suffix = specs_.size() == 1 ? std::string() : " [" + specs_[i].name + "]";
-      f.volume = addUpdatePasses(graph, f.plan, volume.textures(), volume.textures().import(graph), f.suffix);
+      f.volume = addUpdatePasses(graph, shaders_, f.plan, volume.textures(), volume.textures().import(graph),
+                                 f.suffix);
       frames.push_back(std::move(f));
     }
   }
@@ -118,7 +120,7 @@ class DdgiPlugin final : public Plugin {
     // The declaration allows 1, 0.5 and 0.25 only; anything else gathers every pixel.
     const float scale = settings_.lightingPassScale.get();
     const uint32_t k = scale == 0.5f ? 2u : scale == 0.25f ? 4u : 1u;
-    addGatherPasses(graph, frame, sources, k);
+    addGatherPasses(graph, shaders_, frame, sources, k);
   }
 
   void debug(RenderGraph& graph, const FrameContext& frame) {
@@ -134,7 +136,7 @@ class DdgiPlugin final : public Plugin {
     const VolumeFrameState& f =
         (*frames)[std::min<size_t>(size_t(settings_.debugVolume.get()), frames->size() - 1)];
     const glm::vec3 s = f.plan.grid.spacing;
-    addDebugPass(graph, frame, f.plan, f.volume, uint32_t(mode),
+    addDebugPass(graph, shaders_, frame, f.plan, f.volume, uint32_t(mode),
                  settings_.debugProbeRadius.get() * std::min({s.x, s.y, s.z}));
   }
 
@@ -161,6 +163,7 @@ class DdgiPlugin final : public Plugin {
   }
 
   DdgiSettings settings_;
+  std::filesystem::path shaders_;  ///< this plugin's shaders/ folder, wherever it is installed
   std::vector<VolumeSpec> specs_;
   std::vector<std::unique_ptr<ProbeVolume>> volumes_;
   std::set<std::string> reported_;  ///< problems already logged (once each, not every frame)

@@ -28,6 +28,7 @@ void addDebugPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSet
   const auto mode = DebugMode(s.debugMode.get());
   if (mode == DebugMode::Off) return;
   Blackboard& bb = graph.blackboard();
+  const std::filesystem::path shaders = s.shaders;  // record callbacks capture values
   const uint32_t width = frame.view.width, height = frame.view.height;
   const float exposure = s.debugExposure.get();
   const auto viewDesc = TextureDesc::viewSized(VK_FORMAT_R8G8B8A8_UNORM);
@@ -42,7 +43,7 @@ void addDebugPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSet
       bb.setTexture(channels::DebugView, out);
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline =
-            ctx.pipelines().compute({"plugins/vxgi/shaders/debug_voxels.comp", shaderDefines(format)});
+            ctx.pipelines().compute({shaders / "debug_voxels.comp", shaderDefines(format)});
         gpu::Bindings bind;
         ClipMapTextures::bindSampled(bind, h);
         bind.storage("outView", out);
@@ -71,8 +72,7 @@ void addDebugPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSet
         vkCmdClearColorImage(ctx.cmd(), img.handle(), ctx.layout(out), &black, 1, &range);
         return;
       }
-      const gpu::Pipeline& pipeline =
-          ctx.pipelines().compute({"plugins/vxgi/shaders/debug_channel.comp", {}});
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute({shaders / "debug_channel.comp", {}});
       gpu::Bindings bind;
       bind.texture("channel", in, gpu::SamplerKind::NearestClamp).storage("outView", out);
       ctx.dispatchThreads(pipeline, bind, {width, height, 1}, push);

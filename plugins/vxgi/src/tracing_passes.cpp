@@ -14,10 +14,10 @@ namespace bounce::vxgi {
 
 namespace {
 
-constexpr const char* kShaders = "plugins/vxgi/shaders/";
-
-gpu::ShaderSource shader(const char* file, const ClipMapFormat& format) {
-  return {std::string(kShaders) + file, shaderDefines(format)};
+// `shaders`: the plugin's shaders/ folder (VxgiSettings::shaders).
+gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file,
+                         const ClipMapFormat& format) {
+  return {shaders / file, shaderDefines(format)};
 }
 
 // tracing_common.glsl's push constants.
@@ -68,6 +68,7 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
                       const ClipMapHandles& handles, const ClipMapFormat& format, bool anyVoxelized,
                       bool anySpecular, TemporalHistory* history, bool voxelsChanged) {
   Blackboard& bb = graph.blackboard();
+  const std::filesystem::path shaders = s.shaders;  // record callbacks capture values
   TracingPush push{};
   push.inverseViewProjection = frame.view.inverseViewProjection;
   push.cameraPosition = glm::vec4(frame.view.position, 1.0f);
@@ -119,7 +120,7 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
     const uint32_t width = (frame.view.width + uint32_t(sparsity) - 1) / uint32_t(sparsity);
     const uint32_t height = (frame.view.height + uint32_t(sparsity) - 1) / uint32_t(sparsity);
     return [=](PassContext& ctx) {
-      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("diffuse.comp", format));
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "diffuse.comp", format));
       gpu::Bindings bind;
       ClipMapTextures::bindSampled(bind, h);
       gbuffer.bind(bind);
@@ -154,7 +155,7 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
       const BufferHandle constants = temporalConstants;
       const FrameView view = frame.view;
       return [=](PassContext& ctx) {
-        auto source = gpu::ShaderSource{std::string(kShaders) + "upsample.comp", shaderDefines(format)};
+        auto source = shader(shaders, "upsample.comp", format);
         source.defines.emplace_back("VXGI_TEMPORAL", t ? "1" : "0");
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(source);
         gpu::Bindings bind;
@@ -202,7 +203,7 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
                  : PassDecision::skip(fmt::format("no specular material below roughness {}", threshold));
     });
     return [=](PassContext& ctx) {
-      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("specular.comp", format));
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "specular.comp", format));
       gpu::Bindings bind;
       ClipMapTextures::bindSampled(bind, h);
       gbuffer.bind(bind);

@@ -13,16 +13,17 @@ namespace bounce::vxgi {
 
 namespace {
 
-constexpr const char* kShaders = "plugins/vxgi/shaders/";
-
-gpu::ShaderSource shader(const char* file, const ClipMapFormat& format) {
-  return {std::string(kShaders) + file, shaderDefines(format)};
+// `shaders`: the plugin's shaders/ folder (VxgiSettings::shaders).
+gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file,
+                         const ClipMapFormat& format) {
+  return {shaders / file, shaderDefines(format)};
 }
 
 // downsample.comp for one of its modes: 0 clipped level → the next one's inner box, 1 the
 // coarsest clipped level → mip 0, 2 mip → mip (each mode reads and writes other layouts).
-gpu::ShaderSource downsampleShader(const ClipMapFormat& format, int mode) {
-  gpu::ShaderSource s = shader("downsample.comp", format);
+gpu::ShaderSource downsampleShader(const std::filesystem::path& shaders, const ClipMapFormat& format,
+                                   int mode) {
+  gpu::ShaderSource s = shader(shaders, "downsample.comp", format);
   s.defines.emplace_back("VXGI_DOWNSAMPLE_MODE", std::to_string(mode));
   return s;
 }
@@ -99,6 +100,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                            ClipMapHandles& handles, const VoxelizationPlan& plan,
                            std::shared_ptr<VoxelizationRecord> record, std::function<void()> committed) {
   Blackboard& bb = graph.blackboard();
+  const std::filesystem::path shaders = settings.shaders;  // record callbacks capture values
   const ClipMapLayout& layout = plan.layout;
   const ClipMapFormat format = layout.format();
   const ScratchLayout scratch = ScratchLayout::of(format);
@@ -204,9 +206,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       TextureHandle scratchHandle = scratchTexture;
       return [=](PassContext& ctx) {
         gpu::GraphicsPipelineDesc pd;
-        pd.vertex = shader("voxelize.vert", format);
-        pd.geometry = shader("voxelize.geom", format);
-        pd.fragment = shader("voxelize.frag", format);
+        pd.vertex = shader(shaders, "voxelize.vert", format);
+        pd.geometry = shader(shaders, "voxelize.geom", format);
+        pd.fragment = shader(shaders, "voxelize.frag", format);
         pd.colorFormats = {VK_FORMAT_R8_UNORM};
         pd.depthTest = false;
         pd.depthWrite = false;
@@ -257,7 +259,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         TextureHandle sums = scratchTexture;
         const Aabb cube = *testCube;
         return [=](PassContext& ctx) {
-          const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("test_cube.comp", format));
+          const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "test_cube.comp", format));
           gpu::Bindings bind;
           bind.buffer("clipMap", constants).storage("scratch", sums);
           for (const VoxelBox& box : boxes) {
@@ -281,7 +283,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       b.condition(decide);
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("resolve.comp", format));
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "resolve.comp", format));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants).storage("scratch", sums);
         bindStorage(bind, "voxelsOut", h.clip);
@@ -304,7 +306,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       });
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(format, 0));
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(shaders, format, 0));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants);
         // Source and destination are the same textures, different levels of the stack.
@@ -375,7 +377,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     return [=](PassContext& ctx) {
       uint32_t size = format.mapSize / 2;
       for (uint32_t mip = 0; mip < format.mipCount(); ++mip, size /= 2) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(format, mip == 0 ? 1 : 2));
+        const gpu::Pipeline& pipeline =
+            ctx.pipelines().compute(downsampleShader(shaders, format, mip == 0 ? 1 : 2));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants);
         if (mip == 0)

@@ -43,6 +43,7 @@ std::optional<Aabb> parseCube(const std::string& text) {
 }  // namespace
 
 void VxgiSettings::declare(PluginContext& ctx) {
+  shaders = ctx.shaderFolder();
   const std::string clip = "VXGI|Clip-map", tracing = "VXGI|Tracing", debug = "VXGI|Debug";
   mapSize = ctx.addCVar<int32_t>(
       {.name = "r.VXGI.MapSize",

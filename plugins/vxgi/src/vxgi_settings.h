@@ -9,6 +9,7 @@
 #include <bounce/plugin/plugin_context.h>
 #include <bounce/scene/object_parameters.h>
 
+#include <filesystem>
 #include <optional>
 
 namespace bounce::vxgi {
@@ -49,6 +50,9 @@ struct VxgiSettings {
   ObjectParameter<bool> proportional;      ///< material: emittance ∝ coverage
   ObjectParameter<bool> omniDirectional;   ///< material: emits the same way in every direction
   ObjectParameter<bool> indirectLighting;  ///< light: "VXGI indirect lighting"
+
+  /// This plugin's shaders/ folder (absolute: the plugin may be installed anywhere).
+  std::filesystem::path shaders;
 
   void declare(PluginContext& ctx);
   ClipMapFormat format() const;

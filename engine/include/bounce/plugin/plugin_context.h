@@ -14,7 +14,9 @@
 #include "bounce/scene/scene_data_requests.h"
 #include "bounce/scene/scene_volume.h"
 
+#include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace bounce {
 
@@ -44,6 +46,13 @@ class PluginContext {
       : services_(services), descriptor_(descriptor), owner_(owner) {}
 
   const PluginDescriptor& descriptor() const { return descriptor_; }
+  /// One of this plugin's shaders by its path under the plugin's shaders/ folder
+  /// ("trace.comp"), as gpu::ShaderSource::path: absolute, so the plugin finds its shaders
+  /// wherever it is installed. Includes resolve in the including file's folder, then in
+  /// this shader's folder, then in the engine's GLSL library (docs/architecture.md).
+  std::filesystem::path shaderPath(std::string_view file) const { return shaderFolder() / file; }
+  /// This plugin's shaders/ folder, absolute (bounce_add_plugin's SHADERS).
+  std::filesystem::path shaderFolder() const { return descriptor_.folder() / "shaders"; }
   OwnerId owner() const { return owner_; }
 
   /// A console variable; with `ini` it is also a key of the plugin's ini section, with

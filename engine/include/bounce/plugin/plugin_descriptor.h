@@ -19,7 +19,7 @@
 namespace bounce {
 
 struct PluginDescriptor {
-  std::filesystem::path file;  ///< the descriptor's path
+  std::filesystem::path file;  ///< the descriptor's path (absolute once discovered)
   std::string name;
   std::string friendlyName;
   uint32_t version = 1;
@@ -34,6 +34,9 @@ struct PluginDescriptor {
   std::string consoleVariablePrefix;  ///< optional: its cvar prefix (quiet when disabled)
 
   bool isGlobalIllumination() const { return category == "GlobalIllumination"; }
+  /// The plugin's folder: its descriptor, library, shaders/ and content/ (bounce_add_plugin
+  /// puts them together, in a build tree and installed alike).
+  std::filesystem::path folder() const { return file.parent_path(); }
   std::filesystem::path libraryPath() const;
 
   /// Parses a descriptor file; nullopt with a one-line error naming the file otherwise.

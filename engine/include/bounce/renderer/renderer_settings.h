@@ -26,6 +26,9 @@ struct RendererSettings {
   CVarRef<float> dynamicResFrameTimeBudgetMs;    ///< r.DynamicRes.FrameTimeBudgetMs
   CVarRef<float> dynamicResMinScreenPercentage;  ///< r.DynamicRes.MinScreenPercentage
   CVarRef<float> dynamicResMaxScreenPercentage;  ///< r.DynamicRes.MaxScreenPercentage
+  /// r.Shadow.CacheStaticMaps: keep shadow maps from frame to frame while the geometry,
+  /// transforms and shadow matrices stay the same.
+  CVarRef<bool> cacheShadowMaps;
 };
 
 /// How scene ray tracing runs (r.RayTracing.Backend resolved against the device).

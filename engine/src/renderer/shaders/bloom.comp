@@ -1,9 +1,11 @@
 #version 460
-// Bloom on a mip chain from half the output resolution, one dispatch per step:
+// Bloom on a mip chain from half the output resolution (less the levels finer than a
+// small render), one dispatch per step:
 //   mode 0: bright-pass filter the HDR image into mip 0 (13-tap downsample, Jimenez 2014)
 //   mode 1: downsample mip i−1 into mip i (same filter)
 //   mode 2: upsample mip i+1 with a 3×3 tent and add it to mip i
 #include "bounce/common.glsl"
+#include "bloom_bright_pass.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D source;
@@ -40,17 +42,11 @@ void main() {
   vec2 texel = 1.0 / vec2(textureSize(source, 0));
   vec3 c;
   if (pc.mode == 0u) {
-    // Mip 0 is half the output size; its taps are output pixels apart even when the HDR
-    // image is a smaller render (then they interpolate it bilinearly). At full resolution
-    // 2·size − 1 ≤ the source size, so the taps are its texels, as before.
+    // Mip 0's taps are half its texels apart, as if it were downsampled from a level
+    // twice its size, even when the HDR image is a smaller render (then they interpolate
+    // it bilinearly). At full resolution 2·size − 1 ≤ the source size: its texels.
     vec2 outputTexel = 1.0 / max(vec2(textureSize(source, 0)), vec2(2u * pc.size - 1u));
-    c = downsample13(uv, outputTexel) * pc.exposure;
-    // Soft knee: only light above the threshold blooms, without a hard edge.
-    float l = luminance(c);
-    float knee = max(pc.threshold * 0.5, 1e-4);
-    float soft = clamp(l - pc.threshold + knee, 0.0, 2.0 * knee);
-    soft = soft * soft / (4.0 * knee);
-    c *= max(soft, l - pc.threshold) / max(l, 1e-4);
+    c = bloomBrightPass(downsample13(uv, outputTexel) * pc.exposure, pc.threshold);
   } else if (pc.mode == 1u) {
     c = downsample13(uv, texel);
   } else {

@@ -2,6 +2,7 @@
 // Exposure, bloom, tone mapping and sRGB encoding into the displayed image.
 #include "bounce/color.glsl"
 #include "bounce/common.glsl"
+#include "bloom_bright_pass.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D hdr;
@@ -16,6 +17,8 @@ layout(push_constant) uniform Push {
   uint hasBloom;
   float exposure;        // 2^EV
   float bloomIntensity;
+  float bloomThreshold;
+  float bloomSkippedLevels;  // the chain's levels finer than this render, not computed
 } pc;
 
 // ACES filmic curve, Narkowicz 2015 fit.
@@ -26,7 +29,13 @@ void main() {
   if (any(greaterThanEqual(p, pc.size))) return;
   vec2 uv = (vec2(p) + 0.5) / vec2(pc.size);
   vec3 c = texelFetch(hdr, ivec2(p), 0).rgb * pc.exposure;
-  if (pc.hasBloom != 0u) c = mix(c, textureLod(bloom, uv, 0).rgb, pc.bloomIntensity);
+  if (pc.hasBloom != 0u) {
+    // Each level of the chain adds the bright light blurred by its radius. The levels
+    // finer than a small render (skipped) would blur it by less than one of its pixels:
+    // their share is this pixel's bright light, once per level.
+    vec3 b = textureLod(bloom, uv, 0).rgb + pc.bloomSkippedLevels * bloomBrightPass(c, pc.bloomThreshold);
+    c = mix(c, b, pc.bloomIntensity);
+  }
   c = sanitize(c, HALF_MAX);
   if (pc.op == OPERATOR_ACES) c = aces(c);
   else if (pc.op == OPERATOR_REINHARD) c = c / (1.0 + c);

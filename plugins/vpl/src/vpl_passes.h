@@ -1,0 +1,46 @@
+#pragma once
+// VPL's render-graph passes:
+//   FrameBegin       VPL.Setup (light table, clear the merge grid), VPL.Trace (light paths,
+//                    VPLs into the grid), VPL.Merge (compact the grid into the VPL list)
+//                    — only when the scene or a generation setting changed
+//   IndirectDiffuse  VPL.Gather (+ VPL.Deinterleave when interleaved): the IndirectDiffuse channel
+//   DebugView        VPL.Debug: r.VPL.DebugMode 2 and 3
+
+#include "vpl_plan.h"
+
+#include <bounce/frame/frame_context.h>
+#include <bounce/graph/render_graph.h>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace bounce::vpl {
+
+/// Bytes of the VPL list for `capacity` lights: a 16-byte header, 48 bytes per light.
+inline uint64_t vplListBytes(uint32_t capacity) { return 16 + 48 * uint64_t(std::max(capacity, 1u)); }
+
+/// What this frame does, decided on the CPU.
+struct FramePlan {
+  VplPlan plan;
+  uint32_t seed = 1;
+  bool regenerate = false;  ///< trace and merge this frame
+  std::string regenerateReason;
+  float clampCells = 0.5f;  ///< r.VPL.Clamp (cells)
+  float intensity = 1.0f;
+  uint32_t interleave = 1;        ///< r.VPL.Interleave
+  uint32_t listCapacity = 1;      ///< VPLs the list's buffer holds (the gather never reads past it)
+  std::filesystem::path shaders;  ///< the plugin's shader folder (PluginContext::shaderFolder)
+};
+
+/// The generation passes; `list` is the imported persistent VPL list, returned written.
+/// `onGenerated` runs when the merge pass is recorded (the list then holds this plan).
+BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferHandle list,
+                                 std::function<void()> onGenerated);
+/// VPL.Gather (and VPL.Deinterleave for r.VPL.Interleave > 1), publishing the IndirectDiffuse channel.
+void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list);
+/// VPL.Debug for modes 2 and 3, publishing the DebugView channel.
+void addDebugPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list,
+                  uint32_t mode);
+
+}  // namespace bounce::vpl
