@@ -23,8 +23,9 @@ class PluginHostTest : public ::testing::Test {
   QualityKnobRegistry knobs;
   SceneVolumeKinds volumeKinds;
   SceneDataRequests sceneData;
-  EngineServices services{cvars,      console, config, parameters,  hooks,
-                          debugViews, aovs,    knobs,  volumeKinds, sceneData};
+  EngineEvents events;
+  EngineServices services{cvars, console, config,      parameters, hooks, debugViews,
+                          aovs,  knobs,   volumeKinds, sceneData,  events};
   PluginHost host{services};
 };
 
@@ -62,6 +63,7 @@ TEST_F(PluginHostTest, LoadsAPluginAndItsRegistrations) {
 
 TEST_F(PluginHostTest, UnloadRemovesEverythingItRegistered) {
   ASSERT_TRUE(host.load("TestGood"));
+  EXPECT_EQ(events.sceneLoaded.size(), 1u);  // the plugin keeps a subscription
   ASSERT_TRUE(host.unload("TestGood"));
   EXPECT_FALSE(host.isLoaded("TestGood"));
   EXPECT_EQ(cvars.find("test.Good.Value"), nullptr);
@@ -72,6 +74,7 @@ TEST_F(PluginHostTest, UnloadRemovesEverythingItRegistered) {
   EXPECT_EQ(aovs.find("test-good"), nullptr);
   EXPECT_TRUE(knobs.of("TestGood").empty());
   EXPECT_TRUE(hooks.all().empty());
+  EXPECT_EQ(events.sceneLoaded.size(), 0u);
   // And it can come back.
   EXPECT_TRUE(host.load("TestGood"));
   EXPECT_NE(cvars.find("test.Good.Value"), nullptr);
@@ -101,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(
         FailureCase{"TestMissingLibrary", "plugin 'TestMissingLibrary': library "},
         FailureCase{"TestNoEntry", "does not export bounce_plugin_entry()"},
         FailureCase{"TestBadVersion",
-                    "plugin 'TestBadVersion' was built against plugin API 999, this engine provides 1"},
+                    "plugin 'TestBadVersion' was built against plugin API 999, this engine provides "},
         FailureCase{"TestOldApi", "plugin 'TestOldApi'"},
         FailureCase{"TestFailing", "plugin 'TestFailing' failed to start: no suitable device for this test"},
         FailureCase{"TestMissingDependency",

@@ -5,6 +5,7 @@
 #include "bounce/config/config_stack.h"
 #include "bounce/config/console.h"
 #include "bounce/config/cvar_registry.h"
+#include "bounce/frame/engine_events.h"
 #include "bounce/frame/frame_context.h"
 #include "bounce/frame/pass_hooks.h"
 #include "bounce/graph/compiled_graph.h"
@@ -78,6 +79,13 @@ class Engine {
   const SceneVolumeKinds& sceneVolumeKinds() const { return volumeKinds_; }
   /// Scene data plugins asked for (simplified meshes).
   const SceneDataRequests& sceneDataRequests() const { return sceneData_; }
+  /// Scene loaded, camera moved, setting changed, frame completed (the renderer sends
+  /// the last two).
+  EngineEvents& events() { return events_; }
+  /// The device the renderer runs on (null: none yet); plugins read it through their
+  /// context and FrameContext::device. Set by Renderer.
+  void setDevice(const gpu::DeviceCapabilities* device) { services_.device = device; }
+  const gpu::DeviceCapabilities* device() const { return services_.device; }
   PluginHost& plugins() { return *plugins_; }
   EngineServices& services() { return services_; }
 
@@ -96,7 +104,8 @@ class Engine {
   GltfLoadResult loadScene(const std::filesystem::path& path);
   Scene* scene() { return scene_.get(); }
   const Scene* scene() const { return scene_.get(); }
-  void setScene(std::unique_ptr<Scene> scene) { scene_ = std::move(scene); }
+  /// Replaces the scene (generated scenes, tests); sends the scene-loaded event.
+  void setScene(std::unique_ptr<Scene> scene);
   SceneExtrasSchema extrasSchema() const;
 
   /// The selected GI technique if its plugin is loaded, else "none".
@@ -139,8 +148,12 @@ class Engine {
   QualityKnobRegistry knobs_;
   SceneVolumeKinds volumeKinds_;
   SceneDataRequests sceneData_;
-  EngineServices services_{cvars_,      console_, config_, parameters_,  hooks_,
-                           debugViews_, aovs_,    knobs_,  volumeKinds_, sceneData_};
+  EngineEvents events_;
+  EngineServices services_{cvars_, console_, config_,      parameters_, hooks_, debugViews_,
+                           aovs_,  knobs_,   volumeKinds_, sceneData_,  events_};
+  // Every effective change of a variable, sent on as a setting-changed event.
+  Subscription settingsForward_ =
+      cvars_.onAnyChanged([this](const CVar& cvar) { events_.settingChanged.emit({cvar}); });
   std::unique_ptr<PluginHost> plugins_;
   std::unique_ptr<Scene> scene_;
 

@@ -356,8 +356,16 @@ SceneExtrasSchema Engine::extrasSchema() const {
 GltfLoadResult Engine::loadScene(const fs::path& path) {
   SceneExtrasSchema schema = extrasSchema();
   GltfLoadResult result = loadGltf(fromWorkingDirectoryOrRoot(path, root_).string(), &schema);
-  if (result.scene) scene_ = std::move(result.scene);
+  if (result.scene) {
+    scene_ = std::move(result.scene);
+    events_.sceneLoaded.emit({*scene_, path.string()});
+  }
   return result;
+}
+
+void Engine::setScene(std::unique_ptr<Scene> scene) {
+  scene_ = std::move(scene);
+  if (scene_) events_.sceneLoaded.emit({*scene_, std::string()});
 }
 
 std::string Engine::technique() const {

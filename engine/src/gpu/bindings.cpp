@@ -34,4 +34,17 @@ Bindings& Bindings::buffer(std::string name, const Buffer& buffer) {
   return *this;
 }
 
+Bindings& Bindings::textureOr(std::string name, TextureHandle handle, FallbackTexture fallback,
+                              SamplerKind sampler) {
+  texture(std::move(name), handle, sampler);
+  entries_.back().textureFallback = fallback;
+  return *this;
+}
+
+Bindings& Bindings::bufferOr(std::string name, BufferHandle handle, FallbackBuffer fallback) {
+  buffer(std::move(name), handle);
+  entries_.back().bufferFallback = fallback;
+  return *this;
+}
+
 }  // namespace bounce::gpu

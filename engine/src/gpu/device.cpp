@@ -103,7 +103,8 @@ int32_t queueFamilyFor(VkPhysicalDevice pd, VkSurfaceKHR surface) {
   vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, families.data());
   for (uint32_t i = 0; i < n; ++i) {
     const auto& q = families[i];
-    if (!(q.queueFlags & VK_QUEUE_GRAPHICS_BIT) || !(q.queueFlags & VK_QUEUE_COMPUTE_BIT) || !q.timestampValidBits)
+    if (!(q.queueFlags & VK_QUEUE_GRAPHICS_BIT) || !(q.queueFlags & VK_QUEUE_COMPUTE_BIT) ||
+        !q.timestampValidBits)
       continue;
     if (surface) {
       VkBool32 present = VK_FALSE;
@@ -186,7 +187,8 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   std::vector<const char*> extensions;
   for (const std::string& e : options.instanceExtensions) extensions.push_back(e.c_str());
   if (options.createSurface && options.instanceExtensions.empty())
-    return fail("a window surface needs the window system's instance extensions (DeviceOptions::instanceExtensions)");
+    return fail(
+        "a window surface needs the window system's instance extensions (DeviceOptions::instanceExtensions)");
   if (d->debugUtils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   if (d->synchronizationValidation_) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
 
@@ -309,6 +311,7 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   e12.storageBuffer8BitAccess = s12.storageBuffer8BitAccess;
   e12.uniformAndStorageBuffer8BitAccess = s12.uniformAndStorageBuffer8BitAccess;
   e12.shaderInt8 = s12.shaderInt8;
+  e12.shaderBufferInt64Atomics = s12.shaderBufferInt64Atomics;
   VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &e12};
   const VkPhysicalDeviceFeatures& s = supported.features;
   VkPhysicalDeviceFeatures& e = enable.features;
@@ -327,13 +330,32 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   e.fillModeNonSolid = s.fillModeNonSolid;
   e.shaderInt64 = s.shaderInt64;
 
-  d->features_.geometryShader = s.geometryShader;
-  d->features_.fragmentStoresAndAtomics = s.fragmentStoresAndAtomics;
-  d->features_.shaderFloat16 = s12.shaderFloat16;
-  d->features_.shaderImageFloat32Atomics = atomicFloat.shaderImageFloat32Atomics;
-  d->features_.shaderImageFloat32AtomicAdd = atomicFloat.shaderImageFloat32AtomicAdd;
-  d->features_.samplerAnisotropy = s.samplerAnisotropy;
-  d->features_.rayQuery = hasRayQuery;
+  DeviceCapabilities& caps = d->capabilities_;
+  caps.name = d->name_;
+  caps.cpu = d->isCpu();
+  caps.features.geometryShader = s.geometryShader;
+  caps.features.fragmentStoresAndAtomics = s.fragmentStoresAndAtomics;
+  caps.features.shaderFloat16 = s12.shaderFloat16;
+  caps.features.shaderImageFloat32Atomics = atomicFloat.shaderImageFloat32Atomics;
+  caps.features.shaderImageFloat32AtomicAdd = atomicFloat.shaderImageFloat32AtomicAdd;
+  caps.features.shaderBufferFloat32AtomicAdd = atomicFloat.shaderBufferFloat32AtomicAdd;
+  caps.features.samplerAnisotropy = s.samplerAnisotropy;
+  caps.features.rayQuery = hasRayQuery;
+  caps.features.shaderInt64 = s.shaderInt64;
+  caps.features.shaderBufferInt64Atomics = s12.shaderBufferInt64Atomics;
+  const VkPhysicalDeviceLimits& limits = d->properties_.limits;
+  caps.limits.maxImageDimension2D = limits.maxImageDimension2D;
+  caps.limits.maxImageDimension3D = limits.maxImageDimension3D;
+  caps.limits.maxImageDimensionCube = limits.maxImageDimensionCube;
+  caps.limits.maxImageArrayLayers = limits.maxImageArrayLayers;
+  caps.limits.maxStorageBufferRange = limits.maxStorageBufferRange;
+  caps.limits.maxComputeSharedMemorySize = limits.maxComputeSharedMemorySize;
+  caps.limits.maxComputeWorkGroupInvocations = limits.maxComputeWorkGroupInvocations;
+  caps.limits.maxPushConstantsSize = limits.maxPushConstantsSize;
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
+  vkGetPhysicalDeviceProperties2(best, &properties2);
+  caps.limits.subgroupSize = subgroup.subgroupSize;
 
   std::vector<const char*> deviceExts{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (hasAtomicFloat) deviceExts.push_back(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);

@@ -3,6 +3,7 @@
 #include "bounce/core/log.h"
 #include "bounce/gpu/barriers.h"
 #include "bounce/gpu/pass_context.h"
+#include "gpu/fallback_resources.h"
 
 #include <fmt/format.h>
 
@@ -40,6 +41,14 @@ struct PooledBuffer {
 // Pool entries unused for this many frames are freed (a resize leaves the old ones).
 constexpr uint64_t kPoolKeepFrames = 4;
 
+// A read-back a pass asked for: host memory the copy lands in, and who gets the bytes.
+struct PendingReadback {
+  std::string pass;
+  std::unique_ptr<Buffer> buffer;
+  uint64_t bytes = 0;
+  ReadbackFn done;
+};
+
 // One pass's counters: a low and a high word per unit (bounce/work_counters.glsl).
 constexpr VkDeviceSize kCounterSlotBytes = 2 * kWorkUnitCount * sizeof(uint32_t);
 
@@ -56,12 +65,14 @@ struct GraphExecutor::State {
   uint64_t frame = 0;
   std::vector<PooledImage> images;
   std::vector<PooledBuffer> buffers;
-  Image black;
+  std::unique_ptr<FallbackResources> fallbacks;
   MemoryReport lastMemory;
   // Persistent allocations this executor made: freed with it if their owner lives on.
   std::vector<std::weak_ptr<PersistentStorage>> persistent;
   // Staging memory of this frame's uploads, kept until the GPU finished the frame.
   std::vector<std::unique_ptr<Buffer>> staging;
+  // Read-backs of this frame, handed to their callbacks once the GPU finished it.
+  std::vector<PendingReadback> readbacks;
   // Work counting: one slot per executed pass, host-visible so the sums are read
   // directly after the frame.
   bool countWork = false;
@@ -80,11 +91,9 @@ struct GraphExecutor::State {
     check(vkAllocateCommandBuffers(d.handle(), &ai, &cmd), "vkAllocateCommandBuffers");
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     check(vkCreateFence(d.handle(), &fci, nullptr, &fence), "vkCreateFence");
-    // Unavailable optional inputs read as black (zero irradiance, zero radiance).
-    black = Image(d, TextureDesc{.format = VK_FORMAT_R16G16B16A16_SFLOAT, .width = 1, .height = 1},
-                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "black");
-    const uint16_t zeros[4] = {0, 0, 0, 0};
-    uploadImage(d, black, zeros, sizeof(zeros), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    // Unavailable optional inputs read as black (zero irradiance, zero radiance), or as
+    // the fallback a binding names.
+    fallbacks = std::make_unique<FallbackResources>(d);
   }
   ~State() {
     VkDevice dev = device.handle();
@@ -180,8 +189,8 @@ class ExecutorPassContext final : public PassContext {
                       const GpuScene& scene, VkCommandBuffer cmd, const std::vector<Image*>& images,
                       const std::vector<Buffer*>& buffers, const std::vector<VkImageLayout>& layouts,
                       const std::vector<bool>& declared, const std::vector<bool>& unavailable,
-                      const Image& black, const std::string& pass,
-                      std::vector<std::unique_ptr<Buffer>>& staging,
+                      const FallbackResources& fallbacks, const std::string& pass,
+                      std::vector<std::unique_ptr<Buffer>>& staging, std::vector<PendingReadback>& readbacks,
                       std::optional<WorkCounterSlot> counterSlot)
       : device_(device),
         pipelines_(pipelines),
@@ -193,9 +202,10 @@ class ExecutorPassContext final : public PassContext {
         layouts_(layouts),
         declared_(declared),
         unavailable_(unavailable),
-        black_(black),
+        fallbacks_(fallbacks),
         pass_(pass),
         staging_(staging),
+        readbacks_(readbacks),
         counterSlot_(counterSlot) {}
 
   void upload(BufferHandle dst, const void* data, uint64_t bytes, uint64_t offset) const override {
@@ -231,6 +241,41 @@ class ExecutorPassContext final : public PassContext {
     vkCmdCopyBufferToImage(cmd_, src.handle(), target.handle(), l, 1, &copy);
   }
 
+  void readback(BufferHandle src, ReadbackFn done, uint64_t offset, uint64_t bytes) const override {
+    if (!done) throw std::logic_error(fmt::format("pass '{}': read-back without a callback", pass_));
+    const Buffer& source = buffer(src);
+    requireTransferSource(src.resource, "buffer");
+    if (bytes == kWholeBuffer) bytes = offset < source.size() ? source.size() - offset : 0;
+    if (bytes == 0 || offset + bytes > source.size() || offset + bytes < offset)
+      throw std::logic_error(fmt::format("pass '{}': read-back of {} bytes at {} from a {}-byte buffer",
+                                         pass_, bytes, offset, source.size()));
+    PendingReadback& rb = pendingReadback(bytes, std::move(done));
+    const VkBufferCopy copy{offset, 0, bytes};
+    vkCmdCopyBuffer(cmd_, source.handle(), rb.buffer->handle(), 1, &copy);
+    makeVisibleToHost();
+  }
+
+  void readback(TextureHandle src, ReadbackFn done) const override {
+    if (!done) throw std::logic_error(fmt::format("pass '{}': read-back without a callback", pass_));
+    if (!available(src))
+      throw std::logic_error(fmt::format("pass '{}': read-back of an unavailable texture", pass_));
+    requireTransferSource(src.resource, "texture");
+    const Image& source = image(src);
+    const VkExtent3D e = source.extent(0);
+    const uint32_t layers = source.desc().type == TextureType::Tex3D ? 1u : source.desc().layers;
+    const uint64_t bytes =
+        uint64_t(e.width) * e.height * e.depth * layers * formatBytesPerTexel(source.format());
+    PendingReadback& rb = pendingReadback(bytes, std::move(done));
+    VkBufferImageCopy copy{};
+    copy.imageSubresource = {source.aspect(), 0, 0, layers};
+    copy.imageExtent = e;
+    vkCmdCopyImageToBuffer(cmd_, source.handle(), layout(src), rb.buffer->handle(), 1, &copy);
+    makeVisibleToHost();
+  }
+
+  const Image& fallback(FallbackTexture kind) const override { return fallbacks_.texture(kind); }
+  const Buffer& fallback(FallbackBuffer kind) const override { return fallbacks_.buffer(kind); }
+
   VkCommandBuffer cmd() const override { return cmd_; }
   const Device& device() const override { return device_; }
   PipelineCache& pipelines() const override { return pipelines_; }
@@ -238,7 +283,7 @@ class ExecutorPassContext final : public PassContext {
   const GpuScene& scene() const override { return scene_; }
 
   const Image& image(TextureHandle h) const override {
-    if (!available(h)) return black_;
+    if (!available(h)) return fallbacks_.texture(FallbackTexture::Black2D);
     return *images_[h.resource];
   }
   const Buffer& buffer(BufferHandle h) const override {
@@ -261,6 +306,8 @@ class ExecutorPassContext final : public PassContext {
            buffers_[h.resource];
   }
   bool renderingActive() const { return renderingActive_; }
+  /// Which resources this pass declared with Access::TransferSrc (what read-backs may copy).
+  void setTransferSources(const std::vector<bool>* sources) { transferSources_ = sources; }
   bool countingWork() const override { return counterSlot_.has_value(); }
 
  protected:
@@ -277,10 +324,34 @@ class ExecutorPassContext final : public PassContext {
   const std::vector<VkImageLayout>& layouts_;
   const std::vector<bool>& declared_;
   const std::vector<bool>& unavailable_;
-  const Image& black_;
+  const FallbackResources& fallbacks_;
   const std::string& pass_;
   std::vector<std::unique_ptr<Buffer>>& staging_;
+  std::vector<PendingReadback>& readbacks_;
   std::optional<WorkCounterSlot> counterSlot_;
+  const std::vector<bool>* transferSources_ = nullptr;
+
+  // The copy reads the resource in the state the graph left it for this pass: it must
+  // have been declared as a transfer source.
+  void requireTransferSource(uint32_t resource, const char* what) const {
+    if (!transferSources_ || !(*transferSources_)[resource])
+      throw std::logic_error(
+          fmt::format("pass '{}': read-back needs the {} declared with Access::TransferSrc", pass_, what));
+  }
+
+  PendingReadback& pendingReadback(uint64_t bytes, ReadbackFn done) const {
+    readbacks_.push_back({pass_,
+                          std::make_unique<Buffer>(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                   MemoryUsage::Readback, "readback." + pass_),
+                          bytes, std::move(done)});
+    return readbacks_.back();
+  }
+
+  // The copy's writes, visible to the host once the frame's fence signals.
+  void makeVisibleToHost() const {
+    memoryBarrier(cmd_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+  }
 
   const Buffer& stage(const void* data, uint64_t bytes) const {
     staging_.push_back(
@@ -336,6 +407,7 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
                                    const FrameContext& frame, const GpuScene& scene) {
   State& s = *state_;
   ++s.frame;
+  s.readbacks.clear();  // left over only by a frame that failed before its fence
   FrameResult result;
   const size_t nRes = compiled.resources.size();
   std::vector<Image*> images(nRes, nullptr);
@@ -388,7 +460,7 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
   check(vkBeginCommandBuffer(s.cmd, &bi), "vkBeginCommandBuffer");
   if (executed) vkCmdResetQueryPool(s.cmd, s.queries, 0, executed * 2);
 
-  std::vector<bool> declared(nRes), unavailable(nRes);
+  std::vector<bool> declared(nRes), unavailable(nRes), transferSources(nRes);
   uint32_t query = 0;
   std::vector<std::pair<std::string, PassWork>> timedPasses;
   for (const CompiledPass& cp : compiled.passes) {
@@ -435,7 +507,11 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
     const RenderGraph::Pass& pass = graph.passes()[cp.node];
     std::fill(declared.begin(), declared.end(), false);
     std::fill(unavailable.begin(), unavailable.end(), false);
-    for (const auto& use : pass.uses) declared[use.resource] = true;
+    std::fill(transferSources.begin(), transferSources.end(), false);
+    for (const auto& use : pass.uses) {
+      declared[use.resource] = true;
+      if (use.access == Access::TransferSrc) transferSources[use.resource] = true;
+    }
     for (uint32_t r : cp.unavailableOptionalReads) unavailable[r] = true;
     PassWork work;
     if (pass.record) {
@@ -444,7 +520,8 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
         slot = PassContext::WorkCounterSlot{s.counters->handle(), timedPasses.size() * s.counterStride,
                                             kCounterSlotBytes};
       ExecutorPassContext ctx(s.device, s.pipelines, frame, scene, s.cmd, images, buffers, layouts, declared,
-                              unavailable, s.black, cp.name, s.staging, slot);
+                              unavailable, *s.fallbacks, cp.name, s.staging, s.readbacks, slot);
+      ctx.setTransferSources(&transferSources);
       try {
         pass.record(ctx);
       } catch (const std::exception& e) {
@@ -471,6 +548,17 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
   check(vkQueueSubmit2(s.device.queue(), 1, &si, s.fence), "vkQueueSubmit2");
   check(vkWaitForFences(s.device.handle(), 1, &s.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
   s.staging.clear();
+  // Read-backs in the order asked; a callback that throws loses only its own result.
+  std::vector<PendingReadback> readbacks = std::move(s.readbacks);
+  s.readbacks.clear();
+  for (PendingReadback& rb : readbacks) {
+    try {
+      rb.done(std::span<const std::byte>(static_cast<const std::byte*>(rb.buffer->mapped()), rb.bytes));
+    } catch (const std::exception& e) {
+      result.errors.push_back(fmt::format("pass '{}': read-back callback failed: {}", rb.pass, e.what()));
+      log::error("{}", result.errors.back());
+    }
+  }
 
   if (query) {
     std::vector<uint64_t> ticks(query);

@@ -21,7 +21,12 @@ gpu::DescriptorWrites PassContext::resolve(const gpu::Pipeline& pipeline,
       case Kind::Sampled: {
         VkImageView view;
         VkImageLayout imageLayout;
-        if (auto* h = std::get_if<TextureHandle>(&e.resource)) {
+        if (auto* h = std::get_if<TextureHandle>(&e.resource); h && e.textureFallback && !available(*h)) {
+          const gpu::Image& img = fallback(*e.textureFallback);
+          view = img.view();
+          imageLayout = isDepthFormat(img.format()) ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
+                                                    : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        } else if (h) {
           const gpu::Image& img = image(*h);
           // An unavailable optional input binds as the 1×1 black fallback: no mips.
           view = (e.mip == gpu::Bindings::kAllMips || !available(*h)) ? img.view() : img.mipView(e.mip);
@@ -42,9 +47,11 @@ gpu::DescriptorWrites PassContext::resolve(const gpu::Pipeline& pipeline,
         break;
       }
       case Kind::Buffer: {
-        const gpu::Buffer* b = std::holds_alternative<BufferHandle>(e.resource)
-                                   ? &buffer(std::get<BufferHandle>(e.resource))
-                                   : std::get<const gpu::Buffer*>(e.resource);
+        const gpu::Buffer* b = nullptr;
+        if (auto* h = std::get_if<BufferHandle>(&e.resource))
+          b = e.bufferFallback && !available(*h) ? &fallback(*e.bufferFallback) : &buffer(*h);
+        else
+          b = std::get<const gpu::Buffer*>(e.resource);
         writes.buffer(e.name, b->handle());
         break;
       }

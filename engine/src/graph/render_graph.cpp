@@ -20,12 +20,18 @@ BufferHandle Blackboard::buffer(std::string_view name) const {
   auto it = buffers_.find(name);
   return it == buffers_.end() ? BufferHandle{} : it->second;
 }
-bool Blackboard::has(std::string_view name) const { return textures_.count(name) || buffers_.count(name); }
+bool Blackboard::has(std::string_view name) const {
+  return textures_.count(name) || buffers_.count(name) || values_.count(name);
+}
 std::vector<std::string> Blackboard::names() const {
   std::vector<std::string> out;
   for (const auto& [n, h] : textures_) out.push_back(n);
   for (const auto& [n, h] : buffers_) out.push_back(n);
+  for (const auto& [n, v] : values_) out.push_back(n);
   return out;
+}
+std::string Blackboard::typeMismatch(std::string_view name) {
+  return fmt::format("blackboard value '{}' was set with another type than this key's", name);
 }
 
 // --- PassBuilder ----------------------------------------------------------------------

@@ -27,6 +27,7 @@ void EngineServices::removeOwnedBy(OwnerId owner) {
   knobs.removeOwnedBy(owner);
   volumeKinds.removeOwnedBy(owner);
   sceneData.removeOwnedBy(owner);
+  events.removeOwnedBy(owner);
   console.removeOwnedBy(owner);
   parameters.removeOwnedBy(owner);  // before the variables holding its defaults
   cvars.removeOwnedBy(owner);

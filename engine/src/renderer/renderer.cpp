@@ -32,9 +32,14 @@ Renderer::Renderer(Engine& engine, const gpu::Device& device, RendererOptions op
   executor_ = std::make_unique<gpu::GraphExecutor>(device, *pipelines_);
   pipeline_ = std::make_unique<DeferredPipeline>(engine.rendererSettings(), engine.aovs(), &device);
   rayTracing_ = std::make_unique<RayTracingScenePass>(engine.rendererSettings(), device.features());
+  engine.setDevice(&device.capabilities());
+  sceneLoaded_ = engine.events().sceneLoaded.subscribe([this](const SceneLoadedEvent&) { history_.cut(); });
 }
 
-Renderer::~Renderer() { vkDeviceWaitIdle(device_.handle()); }
+Renderer::~Renderer() {
+  vkDeviceWaitIdle(device_.handle());
+  if (engine_.device() == &device_.capabilities()) engine_.setDevice(nullptr);
+}
 
 namespace {
 
@@ -59,12 +64,15 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
   scene_->update(*scene, engine_.sceneDataRequests().simplifiedMeshesWanted());
   const float percent = outputs.screenPercentage > 0.0f ? outputs.screenPercentage
                                                         : engine_.rendererSettings().screenPercentage.get();
-  const FrameView view = renderView(outputView, percent);
+  FrameView view = renderView(outputView, percent);
+  history_.advance(view, engine_.technique());
   RenderedFrame out;
   out.renderWidth = view.width;
   out.renderHeight = view.height;
   PostProcessSettings pp = PostProcessSettings::blend(*scene, engine_.cvars(), view.position, &out.warnings);
-  FrameContext frame{*scene, engine_.cvars(), view, pp, frameIndex, engine_.technique()};
+  FrameContext frame{
+      *scene, engine_.cvars(), view, pp, frameIndex, engine_.technique(), &device_.capabilities()};
+  if (history_.cameraMoved()) engine_.events().cameraMoved.emit({view});
   RenderGraph graph;
   EngineStages stages = pipeline_->stages(outputs, &readbacks_);
   stages.sceneSetup = [this, lights = std::move(stages.sceneSetup)](RenderGraph& g, const FrameContext& f) {
@@ -73,6 +81,7 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
   };
   out.cpu = engine_.buildFrame(graph, frame, stages);
   out.gpu = gpu::runFrame(*executor_, graph, frame, *scene_, &out.graph);
+  engine_.events().frameCompleted.emit({frameIndex, view, out.gpu.frameMilliseconds, out.gpu.ok()});
 
   auto want = [&](const std::string& name) {
     auto it = readbacks_.find(name);

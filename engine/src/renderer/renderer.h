@@ -4,6 +4,7 @@
 // bounce-render, the viewer, benchmarks and the GPU tests.
 
 #include "bounce/engine.h"
+#include "bounce/frame/view_history.h"
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/gpu_scene.h"
 #include "bounce/gpu/pipeline.h"
@@ -54,6 +55,9 @@ class Renderer {
   /// The scene's acceleration structure (built when a pass traces rays).
   const rt::RayTracingScene& rayTracingScene() const { return rayTracing_->scene(); }
   const gpu::Device& device() const { return device_; }
+  /// The next frame starts without history (FrameView::historyValid false): a camera
+  /// cut, a teleport, anything that makes the last frame unrelated to the next.
+  void cutHistory() { history_.cut(); }
 
   static std::filesystem::path defaultShaderCache();
 
@@ -69,6 +73,8 @@ class Renderer {
   std::unique_ptr<DeferredPipeline> pipeline_;
   std::unique_ptr<RayTracingScenePass> rayTracing_;
   Readbacks readbacks_;
+  ViewHistory history_;
+  Subscription sceneLoaded_;  // a new scene cuts the history
 };
 
 }  // namespace bounce

@@ -25,6 +25,20 @@
 
 namespace bounce::ddgi {
 
+namespace {
+
+/// One probe volume's part of the frame, handed from the update hook (FrameBegin) to the
+/// gather and debug hooks on the frame's blackboard: a frame whose update did not run has
+/// none, rather than an earlier frame's.
+struct VolumeFrameState {
+  VolumePlan plan;
+  VolumeFrame volume;
+  std::string suffix;
+};
+constexpr BlackboardKey<std::vector<VolumeFrameState>> kVolumeFrames{"DDGI.VolumeFrames"};
+
+}  // namespace
+
 class DdgiPlugin final : public Plugin {
  public:
   void startup(PluginContext& ctx) override {
@@ -75,7 +89,7 @@ class DdgiPlugin final : public Plugin {
 
  private:
   void update(RenderGraph& graph, const FrameContext& frame) {
-    frames_.clear();
+    std::vector<VolumeFrameState>& frames = graph.blackboard().set(kVolumeFrames, {});
     std::vector<std::string> problems;
     const ProbeFormat format = settings_.format();
     specs_ = volumeSpecs(frame.scene, settings_.probeSpacing.get(), format.irradianceTexels(),
@@ -90,18 +104,19 @@ class DdgiPlugin final : public Plugin {
     const Lighting lighting = decideLighting(frame.scene, settings_);
     for (size_t i = 0; i < specs_.size(); ++i) {
       ProbeVolume& volume = *volumes_[i];
-      Frame f;
+      VolumeFrameState f;
       f.plan = volume.plan(frame, specs_[i], settings_, lighting);
       f.suffix = specs_.size() == 1 ? std::string() : " [" + specs_[i].name + "]";
       f.volume = addUpdatePasses(graph, shaders_, f.plan, volume.textures(), volume.textures().import(graph),
                                  f.suffix);
-      frames_.push_back(std::move(f));
+      frames.push_back(std::move(f));
     }
   }
 
   void gather(RenderGraph& graph, const FrameContext& frame) {
     std::vector<GatherSource> sources;
-    for (const Frame& f : frames_) sources.push_back({&f.plan, f.volume, f.suffix});
+    if (const auto* frames = graph.blackboard().get(kVolumeFrames))
+      for (const VolumeFrameState& f : *frames) sources.push_back({&f.plan, f.volume, f.suffix});
     // The declaration allows 1, 0.5 and 0.25 only; anything else gathers every pixel.
     const float scale = settings_.lightingPassScale.get();
     const uint32_t k = scale == 0.5f ? 2u : scale == 0.25f ? 4u : 1u;
@@ -110,14 +125,16 @@ class DdgiPlugin final : public Plugin {
 
   void debug(RenderGraph& graph, const FrameContext& frame) {
     const int32_t mode = settings_.debugMode.get();
-    if (frames_.empty() || mode == int32_t(DebugMode::Off)) return;
+    const auto* frames = graph.blackboard().get(kVolumeFrames);
+    if (!frames || frames->empty() || mode == int32_t(DebugMode::Off)) return;
     if (mode == int32_t(DebugMode::IndirectIrradiance)) {
       Blackboard& bb = graph.blackboard();
       if (TextureHandle irradiance = bb.texture(channels::IndirectDiffuse); irradiance.valid())
         bb.setTexture(channels::DebugView, irradiance);
       return;
     }
-    const Frame& f = frames_[std::min<size_t>(size_t(settings_.debugVolume.get()), frames_.size() - 1)];
+    const VolumeFrameState& f =
+        (*frames)[std::min<size_t>(size_t(settings_.debugVolume.get()), frames->size() - 1)];
     const glm::vec3 s = f.plan.grid.spacing;
     addDebugPass(graph, shaders_, frame, f.plan, f.volume, uint32_t(mode),
                  settings_.debugProbeRadius.get() * std::min({s.x, s.y, s.z}));
@@ -145,17 +162,10 @@ class DdgiPlugin final : public Plugin {
     return ConsoleResult{true, lines};
   }
 
-  struct Frame {
-    VolumePlan plan;
-    VolumeFrame volume;
-    std::string suffix;
-  };
-
   DdgiSettings settings_;
   std::filesystem::path shaders_;  ///< this plugin's shaders/ folder, wherever it is installed
   std::vector<VolumeSpec> specs_;
   std::vector<std::unique_ptr<ProbeVolume>> volumes_;
-  std::vector<Frame> frames_;
   std::set<std::string> reported_;  ///< problems already logged (once each, not every frame)
 };
 

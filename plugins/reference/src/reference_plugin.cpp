@@ -50,6 +50,13 @@ struct Estimates {
 class ReferencePlugin final : public Plugin {
  public:
   void startup(PluginContext& ctx) override {
+    // A new scene: the tracer's copy of the old one is gone with it. (Comparing scene
+    // addresses misses a new scene allocated where the old one was.)
+    sceneLoaded_ = ctx.onSceneLoaded([this](const SceneLoadedEvent&) {
+      tracer_.reset();
+      accumulation_.reset();
+      estimates_.reset();
+    });
     samples_ = ctx.addCVar<int32_t>(
         {.name = "r.Reference.SamplesPerPixel",
          .defaultValue = 64,
@@ -118,9 +125,8 @@ class ReferencePlugin final : public Plugin {
  private:
   // Rebuilds what a change invalidated, then traces up to the target sample count.
   std::shared_ptr<const Estimates> trace(const FrameContext& frame) {
-    if (!tracer_ || tracedScene_ != &frame.scene || sceneRevision_ != frame.scene.revision()) {
+    if (!tracer_ || sceneRevision_ != frame.scene.revision()) {
       tracer_ = std::make_unique<PathTracer>(frame.scene);
-      tracedScene_ = &frame.scene;
       sceneRevision_ = frame.scene.revision();
       accumulation_.reset();
     }
@@ -217,7 +223,6 @@ class ReferencePlugin final : public Plugin {
   CVarRef<bool> progressive_;
   CVarRef<bool> progressBar_;
   std::unique_ptr<PathTracer> tracer_;
-  const Scene* tracedScene_ = nullptr;
   uint64_t sceneRevision_ = 0;
   std::unique_ptr<Accumulation> accumulation_;
   glm::mat4 viewProjection_{0.0f};
@@ -225,6 +230,7 @@ class ReferencePlugin final : public Plugin {
   std::shared_ptr<const Estimates> estimates_;
   uint32_t estimatedSamples_ = 0;
   const Accumulation* estimatesFor_ = nullptr;
+  Subscription sceneLoaded_;
 };
 
 }  // namespace bounce::reference

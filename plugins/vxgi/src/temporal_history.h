@@ -6,17 +6,16 @@
 // (a corner's two walls are at the same distance but not lit alike). A still view
 // therefore holds every-pixel tracing after k² frames; a pixel the camera uncovers shows
 // the interpolated value until its own phase comes. Anything that changes what is traced
-// (the voxels, the settings, the size) starts over.
+// (the voxels, the settings, the size) starts over, as do the engine's history cuts (a
+// camera cut, a new scene): the ping-pong pairs are the engine's HistoryTexture.
 
 #include <bounce/frame/frame_context.h>
-#include <bounce/graph/persistent_resource.h>
+#include <bounce/graph/history_texture.h>
 #include <bounce/graph/render_graph.h>
 
 #include <glm/glm.hpp>
 
-#include <array>
 #include <cstdint>
-#include <memory>
 
 namespace bounce::vxgi {
 
@@ -41,16 +40,15 @@ class TemporalHistory {
   /// `key` is everything else the traced values depend on (a change starts over, as
   /// does `voxelsChanged`).
   Frame begin(RenderGraph& graph, const FrameView& view, uint32_t sparsity, uint64_t key, bool voxelsChanged);
-  /// Called once the frame's passes are recorded: this view becomes the previous one.
+  /// Called once the frame's passes are recorded: what they wrote is the next frame's
+  /// history, seen from `view`.
   void end(const FrameView& view);
 
  private:
-  std::array<std::unique_ptr<PersistentTexture>, 2> value_, surface_;
-  uint32_t current_ = 0;  ///< which of the pairs this frame writes
-  uint32_t frames_ = 0;   ///< frames accumulated since the last reset
-  uint64_t key_ = 0;
-  glm::mat4 previousViewProjection_{1.0f};
-  glm::vec3 previousCamera_{0.0f};
+  // rgb: irradiance, a: exact samples held
+  HistoryTexture value_{"VXGI.DiffuseHistory", VK_FORMAT_R16G16B16A16_SFLOAT};
+  // x: metres from the camera the value was seen at (FP16: 0.05% of it), yzw: the normal
+  HistoryTexture surface_{"VXGI.DiffuseHistorySurface", VK_FORMAT_R16G16B16A16_SFLOAT};
 };
 
 }  // namespace bounce::vxgi

@@ -1,6 +1,7 @@
 #include "vxgi_passes.h"
 
 #include <bounce/gpu/barriers.h>
+#include <bounce/gpu/device_capabilities.h>
 #include <bounce/gpu/pass_context.h>
 #include <bounce/graph/channels.h>
 
@@ -142,20 +143,6 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     };
   });
 
-  // What the voxelization samples as shadow maps when the frame has none (no light casts
-  // shadows): lights then carry no shadow layer and never read it, but the binding must
-  // still be a depth array.
-  TextureHandle noShadows;
-  graph.addPass("VXGI.NoShadowMaps", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
-    TextureDesc d{.type = TextureType::Tex2DArray, .format = VK_FORMAT_D32_SFLOAT, .width = 1, .height = 1};
-    noShadows = b.write(b.createTexture("VXGI.NoShadowMaps", d), Access::DepthAttachment);
-    TextureHandle out = noShadows;
-    return [=](PassContext& ctx) {
-      ctx.beginRendering({.depth = DepthTarget{out, 1.0f}});
-      ctx.endRendering();
-    };
-  });
-
   TextureHandle scratchTexture;
   for (uint32_t level = 0; level < format.stackLevels; ++level) {
     const std::vector<VoxelBox> boxes = plan.boxes[level];
@@ -196,6 +183,12 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
 
     graph.addPass(fmt::format("VXGI.Voxelize.L{}", level), Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
       b.useGeometryShaders();  // voxelize.geom reads the clip-map constants
+      // voxelize.geom picks each triangle's dominant axis: without geometry shaders the
+      // level cannot be voxelized, and the report says why.
+      if (frame.device && !frame.device->has(gpu::DeviceFeature::GeometryShader))
+        b.condition([why = frame.device->lacking(gpu::DeviceFeature::GeometryShader)] {
+          return PassDecision::skip(why);
+        });
       scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
       TextureDesc targetDesc;
       targetDesc.format = VK_FORMAT_R8_UNORM;
@@ -209,7 +202,6 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       BufferHandle lights = b.read(bb.buffer(channels::SceneLights), Access::StorageRead);
       BufferHandle matrices = b.read(bb.buffer(channels::ShadowMatrices), Access::StorageRead);
       TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
-      TextureHandle fallbackShadows = b.read(noShadows, Access::Sampled);
       b.condition(decide);
       TextureHandle scratchHandle = scratchTexture;
       return [=](PassContext& ctx) {
@@ -230,8 +222,10 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             .buffer("VxgiLightFlags", flags)
             .buffer("SceneLights", lights)
             .buffer("ShadowMatrices", matrices)
-            .texture("shadowMaps", ctx.available(shadows) ? shadows : fallbackShadows,
-                     gpu::SamplerKind::ShadowCompare)
+            // Without shadow maps (no light casts shadows) lights carry no shadow layer and
+            // never read it, but the binding must still be a depth array.
+            .textureOr("shadowMaps", shadows, gpu::FallbackTexture::FarDepth2DArray,
+                       gpu::SamplerKind::ShadowCompare)
             .storage("scratch", scratchHandle);
         ctx.beginRendering({.colors = {{target, std::nullopt}}});
         uint64_t triangles = 0;
@@ -395,10 +389,11 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         DownsamplePush push{glm::ivec4(0), glm::ivec4(glm::ivec3(int32_t(size)), mip == 0 ? 1 : 2)};
         ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
         ctx.addWork(WorkUnit::ImageBytes, uint64_t(size) * size * size * 9u * format.bytesPerVoxel());
-        // The next mip reads what this one wrote.
-        gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        // The next mip reads what this one wrote: a barrier on just this mip, so the
+        // device need not wait for anything else.
+        if (mip + 1 < format.mipCount())
+          for (TextureHandle t : h.mips)
+            gpu::computeWriteBarrier(ctx.cmd(), ctx.image(t), gpu::ImageRange::mips(mip), ctx.layout(t));
       }
       committed();
     };

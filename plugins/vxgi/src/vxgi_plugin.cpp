@@ -26,6 +26,22 @@
 
 namespace bounce::vxgi {
 
+namespace {
+
+/// What the voxelization hook (AfterGBuffer) hands to the tracing and debug hooks of the
+/// same frame. On the frame's blackboard, so a frame whose voxelization hook did not run
+/// (or failed) has none, rather than the last frame's.
+struct VoxelFrame {
+  ClipMapFormat format;
+  ClipMapHandles handles;
+  bool anyVoxelized = false;
+  bool anySpecular = false;
+  bool voxelsChanged = false;  ///< this frame re-voxelizes something
+};
+constexpr BlackboardKey<VoxelFrame> kVoxelFrame{"VXGI.VoxelFrame"};
+
+}  // namespace
+
 class VxgiPlugin final : public Plugin {
  public:
   void startup(PluginContext& ctx) override {
@@ -88,7 +104,6 @@ class VxgiPlugin final : public Plugin {
   }
 
   void voxelization(RenderGraph& graph, const FrameContext& frame) {
-    frame_.reset();
     ClipMapFormat format = settings_.format();
     if (std::string error = validate(format); !error.empty()) {
       log::warn("VXGI: {}; keeping the previous clip-map", error);
@@ -100,7 +115,7 @@ class VxgiPlugin final : public Plugin {
         requested > 0.0f ? requested : automaticVoxelSize(frame.scene.bounds(), format.mapSize);
     const ClipMapLayout layout = ClipMapLayout::place(format, voxelSize, settings_.anchor(frame));
 
-    Frame f;
+    VoxelFrame f;
     f.format = format;
     f.handles = textures_.import(graph);
     float thickest = 1.0f;  // of the voxelized materials: how far surfaces write past their bounds
@@ -130,18 +145,20 @@ class VxgiPlugin final : public Plugin {
     lastPlanReason_ = plan.reason;
     lastLayout_ = layout;
     f.voxelsChanged = !plan.empty();
-    frame_ = std::move(f);
+    graph.blackboard().set(kVoxelFrame, std::move(f));
   }
 
   void tracing(RenderGraph& graph, const FrameContext& frame) {
-    if (!frame_) return;
-    addTracingPasses(graph, frame, settings_, frame_->handles, frame_->format, frame_->anyVoxelized,
-                     frame_->anySpecular, &history_, frame_->voxelsChanged);
+    const VoxelFrame* f = graph.blackboard().get(kVoxelFrame);
+    if (!f) return;
+    addTracingPasses(graph, frame, settings_, f->handles, f->format, f->anyVoxelized, f->anySpecular,
+                     &history_, f->voxelsChanged);
   }
 
   void debug(RenderGraph& graph, const FrameContext& frame) {
-    if (!frame_) return;
-    addDebugPasses(graph, frame, settings_, frame_->handles, frame_->format);
+    const VoxelFrame* f = graph.blackboard().get(kVoxelFrame);
+    if (!f) return;
+    addDebugPasses(graph, frame, settings_, f->handles, f->format);
   }
 
   ConsoleResult status() const {
@@ -164,18 +181,9 @@ class VxgiPlugin final : public Plugin {
     return ConsoleResult{true, lines};
   }
 
-  struct Frame {
-    ClipMapFormat format;
-    ClipMapHandles handles;
-    bool anyVoxelized = false;
-    bool anySpecular = false;
-    bool voxelsChanged = false;  ///< this frame re-voxelizes something
-  };
-
   VxgiSettings settings_;
   ClipMapTextures textures_;
   ClipMapUpdate update_;
-  std::optional<Frame> frame_;
   std::optional<ClipMapLayout> lastLayout_;
   std::string lastPlanReason_ = "not rendered yet";
   std::shared_ptr<VoxelizationRecord> record_ = std::make_shared<VoxelizationRecord>();

@@ -12,6 +12,10 @@
 
 namespace bounce {
 
+namespace gpu {
+struct DeviceCapabilities;  // bounce/gpu/device_capabilities.h
+}
+
 /// The view being rendered.
 struct FrameView {
   uint32_t width = 1;
@@ -28,6 +32,14 @@ struct FrameView {
   /// it, so the image it converges to does not depend on the render's size.
   float renderScale = 1.0f;
 
+  /// The previous frame's view-projection and camera position (motion vectors,
+  /// reprojecting a history), and whether anything kept from that frame may be reused:
+  /// false on the first frame, after a camera cut (Renderer::cutHistory), a resize, a new
+  /// scene or a change of technique. Filled by the renderer (ViewHistory).
+  glm::mat4 previousViewProjection{1.0f};
+  glm::vec3 previousPosition{0.0f};
+  bool historyValid = false;
+
   static FrameView fromCamera(const Camera& camera, uint32_t width, uint32_t height);
 };
 
@@ -38,6 +50,9 @@ struct FrameContext {
   const PostProcessSettings& postProcess;
   uint64_t frameIndex = 0;
   std::string technique;  ///< the selected GI technique ("none" when off)
+  /// What the device can do (bounce/gpu/device_capabilities.h); null when the graph is
+  /// built without a device (reports, CPU tests).
+  const gpu::DeviceCapabilities* device = nullptr;
 
   /// A setting's value for this frame: the post-process-blended value when the
   /// variable is post-process-overridable, else the variable's value.

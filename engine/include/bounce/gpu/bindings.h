@@ -4,9 +4,11 @@
 
 #include "bounce/gpu/buffer.h"
 #include "bounce/gpu/device.h"
+#include "bounce/gpu/fallback.h"
 #include "bounce/gpu/image.h"
 #include "bounce/graph/resource.h"
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -29,6 +31,13 @@ class Bindings {
   Bindings& storage(std::string name, const Image& image, uint32_t mip = kAllMips);
   Bindings& buffer(std::string name, BufferHandle handle);
   Bindings& buffer(std::string name, const Buffer& buffer);
+  /// A graph texture that may be absent this frame (an optional read whose producer was
+  /// culled, an invalid handle): `fallback` binds in its place. Plain texture() binds a
+  /// black 2D image then, which is wrong for any other view type.
+  Bindings& textureOr(std::string name, TextureHandle handle, FallbackTexture fallback,
+                      SamplerKind sampler = SamplerKind::LinearClamp);
+  /// A graph buffer that may be absent: a zero-filled buffer binds in its place.
+  Bindings& bufferOr(std::string name, BufferHandle handle, FallbackBuffer fallback = FallbackBuffer::Zero);
 
   struct Entry {
     std::string name;
@@ -37,6 +46,8 @@ class Bindings {
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  ///< plain images only
     SamplerKind sampler = SamplerKind::LinearClamp;
     uint32_t mip = kAllMips;
+    std::optional<FallbackTexture> textureFallback;  ///< textureOr
+    std::optional<FallbackBuffer> bufferFallback;    ///< bufferOr
   };
   const std::vector<Entry>& entries() const { return entries_; }
 

@@ -3,6 +3,7 @@
 // queue, memory allocation, shared samplers, one-shot command submission, and the
 // validation-layer message counter that makes tests fail on validation errors.
 
+#include "bounce/gpu/device_capabilities.h"
 #include "bounce/gpu/vulkan_error.h"
 
 #include <vulkan/vulkan.h>
@@ -35,19 +36,6 @@ struct DeviceOptions {
   /// glfwCreateWindowSurface). The device then needs a queue that can present to it,
   /// enables VK_KHR_swapchain, and owns the surface.
   std::function<VkSurfaceKHR(VkInstance)> createSurface;
-};
-
-/// Optional features plugins may depend on (checked, never assumed).
-struct DeviceFeatures {
-  bool geometryShader = false;
-  bool fragmentStoresAndAtomics = false;
-  bool shaderFloat16 = false;
-  bool shaderImageFloat32Atomics = false;  ///< VK_EXT_shader_atomic_float
-  bool shaderImageFloat32AtomicAdd = false;
-  bool samplerAnisotropy = false;
-  /// VK_KHR_ray_query with VK_KHR_acceleration_structure offered (what a hardware
-  /// ray-tracing backend needs; reported, not enabled).
-  bool rayQuery = false;
 };
 
 enum class SamplerKind : uint8_t {
@@ -121,7 +109,9 @@ class Device {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   const std::string& name() const { return name_; }
   bool isCpu() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
-  const DeviceFeatures& features() const { return features_; }
+  const DeviceFeatures& features() const { return capabilities_.features; }
+  /// Features, limits and name, as plugins query them (bounce/gpu/device_capabilities.h).
+  const DeviceCapabilities& capabilities() const { return capabilities_; }
   /// Nanoseconds per timestamp tick.
   double timestampPeriod() const { return properties_.limits.timestampPeriod; }
   bool supportsFormat(VkFormat format, VkFormatFeatureFlags features, bool optimalTiling = true) const;
@@ -172,7 +162,7 @@ class Device {
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_{};
   std::string name_;
-  DeviceFeatures features_;
+  DeviceCapabilities capabilities_;
   bool validation_ = false;
   bool synchronizationValidation_ = false;
   bool debugUtils_ = false;

@@ -12,8 +12,10 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace bounce {
@@ -32,8 +34,13 @@ struct RenderingInfo {
   std::optional<uint32_t> layer;  ///< render into one layer (shadow-map layer, cube face)
 };
 
+/// Receives read-back bytes once the frame's GPU work has completed.
+using ReadbackFn = std::function<void(std::span<const std::byte>)>;
+
 class PassContext {
  public:
+  static constexpr uint64_t kWholeBuffer = ~0ull;
+
   virtual ~PassContext() = default;
 
   virtual VkCommandBuffer cmd() const = 0;
@@ -58,6 +65,23 @@ class PassContext {
   /// Copies tightly packed texels into mip 0 (every layer, or the whole volume) of a
   /// texture the pass declared with Access::TransferDst.
   virtual void upload(TextureHandle destination, const void* texels, uint64_t bytes) const = 0;
+
+  /// Copies `bytes` from `offset` of a buffer the pass declared with Access::TransferSrc
+  /// to host memory; `done` runs with them once the frame's GPU work has completed (after
+  /// the frame's fence, before Renderer::render returns), in the order asked. A pass
+  /// whose only result is a read-back declares PassBuilder::sideEffect, or nothing keeps
+  /// it. Bad ranges or declarations throw std::logic_error (the pass fails, the frame
+  /// goes on).
+  virtual void readback(BufferHandle source, ReadbackFn done, uint64_t offset = 0,
+                        uint64_t bytes = kWholeBuffer) const = 0;
+  /// The same for mip 0 of a texture declared with Access::TransferSrc: every layer (or
+  /// the whole volume), tightly packed, layer by layer.
+  virtual void readback(TextureHandle source, ReadbackFn done) const = 0;
+
+  /// What to bind in place of an absent resource (bounce/gpu/fallback.h);
+  /// Bindings::textureOr / bufferOr use these.
+  virtual const gpu::Image& fallback(gpu::FallbackTexture kind) const = 0;
+  virtual const gpu::Buffer& fallback(gpu::FallbackBuffer kind) const = 0;
 
   // --- recording helpers --------------------------------------------------------------
   /// Binds the pipeline and pushes its descriptors.

@@ -22,9 +22,12 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <typeinfo>
 #include <vector>
 
 namespace bounce {
@@ -34,9 +37,45 @@ using RecordFn = std::function<void(PassContext&)>;
 class CompiledGraph;
 class RenderGraph;
 
-/// Named handles shared between the engine and plugins within one frame (see channels.h).
+/// A typed value on the blackboard: per-frame state one hook hands to a later one (a
+/// plugin's voxelization hook to its tracing hook), gone with the frame's graph, so no
+/// member variable carries it over to a frame where the first hook did not run.
+///
+///   inline constexpr BlackboardKey<VoxelFrame> kVoxelFrame{"VXGI.Frame"};
+///   graph.blackboard().set(kVoxelFrame, frame);                       // AfterGBuffer
+///   if (const VoxelFrame* f = graph.blackboard().get(kVoxelFrame)) ...  // IndirectDiffuse
+template <class T>
+class BlackboardKey {
+ public:
+  explicit constexpr BlackboardKey(std::string_view name) : name_(name) {}
+  constexpr std::string_view name() const { return name_; }
+
+ private:
+  std::string_view name_;
+};
+
+/// Named handles shared between the engine and plugins within one frame (see channels.h),
+/// and typed values (BlackboardKey).
 class Blackboard {
  public:
+  /// Stores `value` under `key` (replacing what was there) and returns it.
+  template <class T>
+  T& set(const BlackboardKey<T>& key, T value) {
+    auto held = std::make_shared<T>(std::move(value));
+    T& ref = *held;
+    values_[std::string(key.name())] = {std::move(held), &typeid(T)};
+    return ref;
+  }
+  /// The value under `key`, or null when none was set this frame. Throws
+  /// std::logic_error when the name holds a value of another type (two keys, one name).
+  template <class T>
+  T* get(const BlackboardKey<T>& key) const {
+    auto it = values_.find(key.name());
+    if (it == values_.end()) return nullptr;
+    if (*it->second.type != typeid(T)) throw std::logic_error(typeMismatch(key.name()));
+    return static_cast<T*>(it->second.value.get());
+  }
+
   void setTexture(std::string_view name, TextureHandle handle);
   void setBuffer(std::string_view name, BufferHandle handle);
   /// Invalid handle when absent.
@@ -48,6 +87,12 @@ class Blackboard {
  private:
   std::map<std::string, TextureHandle, std::less<>> textures_;
   std::map<std::string, BufferHandle, std::less<>> buffers_;
+  struct Value {
+    std::shared_ptr<void> value;
+    const std::type_info* type;
+  };
+  std::map<std::string, Value, std::less<>> values_;
+  static std::string typeMismatch(std::string_view name);
 };
 
 /// Declares one pass's resources during setup.

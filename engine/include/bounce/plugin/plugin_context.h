@@ -5,6 +5,7 @@
 #include "bounce/config/config_stack.h"
 #include "bounce/config/console.h"
 #include "bounce/config/cvar_registry.h"
+#include "bounce/frame/engine_events.h"
 #include "bounce/frame/outputs.h"
 #include "bounce/frame/pass_hooks.h"
 #include "bounce/frame/quality_knobs.h"
@@ -30,7 +31,10 @@ struct EngineServices {
   AovRegistry& aovs;
   QualityKnobRegistry& knobs;
   SceneVolumeKinds& volumeKinds;
-  SceneDataRequests& sceneData;  ///< last, so plugins built before it keep their offsets
+  SceneDataRequests& sceneData;
+  EngineEvents& events;
+  /// The device a renderer runs on; null until one exists (plugins start before it).
+  const gpu::DeviceCapabilities* device = nullptr;
 
   /// Removes everything `owner` registered, from every registry.
   void removeOwnedBy(OwnerId owner);
@@ -99,6 +103,28 @@ class PluginContext {
   void requestSimplifiedMeshes(std::function<bool()> wanted) {
     services_.sceneData.addSimplifiedMeshes(std::move(wanted), owner_);
   }
+
+  // --- events (bounce/frame/engine_events.h) -------------------------------------------
+  /// Keep the Subscription as a member: destroying it unsubscribes. Unloading the plugin
+  /// removes whatever it subscribed either way.
+  Subscription onSceneLoaded(std::function<void(const SceneLoadedEvent&)> callback) {
+    return services_.events.sceneLoaded.subscribe(std::move(callback), owner_);
+  }
+  Subscription onCameraMoved(std::function<void(const CameraMovedEvent&)> callback) {
+    return services_.events.cameraMoved.subscribe(std::move(callback), owner_);
+  }
+  Subscription onSettingChanged(std::function<void(const SettingChangedEvent&)> callback) {
+    return services_.events.settingChanged.subscribe(std::move(callback), owner_);
+  }
+  Subscription onFrameCompleted(std::function<void(const FrameCompletedEvent&)> callback) {
+    return services_.events.frameCompleted.subscribe(std::move(callback), owner_);
+  }
+
+  /// The device's features and limits (bounce/gpu/device_capabilities.h) once a renderer
+  /// exists, else null: plugins start before the device is created, so a technique asks
+  /// in its hooks (FrameContext::device) and turns a missing feature into a pass
+  /// condition, which the frame report shows.
+  const gpu::DeviceCapabilities* device() const { return services_.device; }
 
   /// Read access to engine state.
   const CVarRegistry& cvars() const { return services_.cvars; }

@@ -1,0 +1,65 @@
+// Typed blackboard values (BlackboardKey<T>): per-frame state one hook hands to a later
+// one, checked by type.
+
+#include "bounce/graph/render_graph.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace bounce {
+namespace {
+
+struct VoxelFrame {
+  std::vector<int> handles;
+  bool changed = false;
+};
+constexpr BlackboardKey<VoxelFrame> kFrame{"Test.Frame"};
+constexpr BlackboardKey<float> kSameNameOtherType{"Test.Frame"};
+constexpr BlackboardKey<std::unique_ptr<int>> kMoveOnly{"Test.MoveOnly"};
+
+TEST(TypedBlackboard, AValueSetByOneHookIsReadByALaterOneWithItsType) {
+  RenderGraph g;
+  EXPECT_EQ(g.blackboard().get(kFrame), nullptr);  // nothing set this frame
+  g.blackboard().set(kFrame, VoxelFrame{{1, 2, 3}, true});
+  const VoxelFrame* f = g.blackboard().get(kFrame);
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->handles, (std::vector<int>{1, 2, 3}));
+  EXPECT_TRUE(f->changed);
+  EXPECT_TRUE(g.blackboard().has("Test.Frame"));
+
+  // Setting again replaces the value.
+  g.blackboard().set(kFrame, VoxelFrame{{4}, false});
+  EXPECT_EQ(g.blackboard().get(kFrame)->handles, std::vector<int>{4});
+}
+
+TEST(TypedBlackboard, ValuesLiveOnlyAsLongAsTheFramesGraph) {
+  auto frame1 = std::make_unique<RenderGraph>();
+  frame1->blackboard().set(kFrame, VoxelFrame{{7}, true});
+  frame1.reset();
+  RenderGraph frame2;  // a frame whose first hook did not run sees nothing stale
+  EXPECT_EQ(frame2.blackboard().get(kFrame), nullptr);
+}
+
+TEST(TypedBlackboard, ReadingANameWithAnotherTypeIsAnErrorNamingIt) {
+  RenderGraph g;
+  g.blackboard().set(kFrame, VoxelFrame{});
+  try {
+    g.blackboard().get(kSameNameOtherType);
+    FAIL() << "expected std::logic_error";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("Test.Frame"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TypedBlackboard, HoldsMoveOnlyValues) {
+  RenderGraph g;
+  g.blackboard().set(kMoveOnly, std::make_unique<int>(42));
+  ASSERT_NE(g.blackboard().get(kMoveOnly), nullptr);
+  EXPECT_EQ(**g.blackboard().get(kMoveOnly), 42);
+}
+
+}  // namespace
+}  // namespace bounce
