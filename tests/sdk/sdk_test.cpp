@@ -5,6 +5,7 @@
 // Every step's output goes to a log that a failure prints.
 
 #include "bounce/image/image_buffer.h"
+#include "bounce/plugin/plugin.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -206,10 +207,13 @@ TEST_F(SdkTest, AnOutOfTreePluginBuildsAgainstTheInstallAndRendersWithTheInstall
   // plugin API and one whose library the engine would not find.
   const Outcome otherApi = runCommand(
       "configure-other-api",
-      configure(pluginWithDescriptorEdit("other-api", "\"EngineApiVersion\": 1", "\"EngineApiVersion\": 99"),
-                base_ / "other-api-build"));
+      configure(
+          pluginWithDescriptorEdit("other-api", fmt::format("\"EngineApiVersion\": {}", kPluginApiVersion),
+                                   "\"EngineApiVersion\": 99"),
+          base_ / "other-api-build"));
   EXPECT_NE(otherApi.status, 0);
-  EXPECT_NE(otherApi.log.find("targets plugin API 99, this SDK provides 1"), std::string::npos)
+  EXPECT_NE(otherApi.log.find(fmt::format("targets plugin API 99, this SDK provides {}", kPluginApiVersion)),
+            std::string::npos)
       << otherApi.log;
   const Outcome otherLibrary =
       runCommand("configure-other-library",
