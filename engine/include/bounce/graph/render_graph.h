@@ -38,12 +38,12 @@ class CompiledGraph;
 class RenderGraph;
 
 /// A typed value on the blackboard: per-frame state one hook hands to a later one (a
-/// plugin's voxelization hook to its tracing hook), gone with the frame's graph, so no
+/// plugin's update hook to its gather hook), gone with the frame's graph, so no
 /// member variable carries it over to a frame where the first hook did not run.
 ///
-///   inline constexpr BlackboardKey<VoxelFrame> kVoxelFrame{"VXGI.Frame"};
-///   graph.blackboard().set(kVoxelFrame, frame);                       // AfterGBuffer
-///   if (const VoxelFrame* f = graph.blackboard().get(kVoxelFrame)) ...  // IndirectDiffuse
+///   inline constexpr BlackboardKey<UpdatePlan> kUpdatePlan{"MyGi.UpdatePlan"};
+///   graph.blackboard().set(kUpdatePlan, plan);                        // AfterGBuffer
+///   if (const UpdatePlan* p = graph.blackboard().get(kUpdatePlan)) ...  // IndirectDiffuse
 template <class T>
 class BlackboardKey {
  public:
