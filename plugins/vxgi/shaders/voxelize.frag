@@ -41,38 +41,42 @@ layout(location = 6) flat in vec2 gTriangle2;
 
 layout(location = 0) out vec4 unusedColor;
 
-// The area of the triangle (pixel units, counter-clockwise) inside the unit pixel whose
-// lower corner is `pixel`: Sutherland–Hodgman against the pixel's four sides, then the
-// shoelace formula. This is coverage supersampling taken to the limit: the pieces of a
-// mesh's triangles in one pixel add up to the area they cover, so a surface smaller than
-// a voxel blocks and emits in proportion to its size, while the dilated rasterization
-// still guarantees it a fragment.
+// The area of the triangle (pixel units) inside the unit pixel whose lower corner is
+// `pixel`. This is coverage supersampling taken to the limit: the pieces of a mesh's
+// triangles in one pixel add up to the area they cover, so a surface smaller than a voxel
+// blocks and emits in proportion to its size, while the dilated rasterization still
+// guarantees it a fragment.
+//
+// Computed edge by edge, as font rasterizers accumulate coverage: the winding number of
+// a point is the signed count of edges crossing the ray to its right, so the area inside
+// the pixel S = [0,1]² is Σ_edges ∫ clamp(x_e(y), 0, 1) dy over the edge's y-range
+// clipped to [0, 1] (oriented, so edges going down subtract). Each term is closed-form.
+// No polygon clipping: its dynamically indexed vertex arrays live in memory on a CPU
+// device (lavapipe), one gather per lane per access, and cost more than the rest of the
+// fragment shader.
+float edgeCoverage(vec2 a, vec2 b) {
+  float dy = b.y - a.y;
+  // A horizontal edge crosses no horizontal line; 1e-12 px² is far below any coverage
+  // that matters and keeps the divisions below finite.
+  if (abs(dy) < 1e-12) return 0.0;
+  float y0 = clamp(a.y, 0.0, 1.0), y1 = clamp(b.y, 0.0, 1.0);
+  float x0 = mix(a.x, b.x, clamp((y0 - a.y) / dy, 0.0, 1.0));
+  float x1 = mix(a.x, b.x, clamp((y1 - a.y) / dy, 0.0, 1.0));
+  // Mean of clamp(x, 0, 1) along the clipped piece: (F(x1) − F(x0)) / (x1 − x0) with F
+  // the antiderivative c²/2 + max(x − 1, 0), c = clamp(x, 0, 1). Below 1e-3 px of x
+  // change the difference quotient loses its digits (x reaches ±map size) and the
+  // midpoint is within 1e-3 of it.
+  float dx = x1 - x0;
+  float c0 = clamp(x0, 0.0, 1.0), c1 = clamp(x1, 0.0, 1.0);
+  float F0 = 0.5 * c0 * c0 + max(x0 - 1.0, 0.0), F1 = 0.5 * c1 * c1 + max(x1 - 1.0, 0.0);
+  float mean = abs(dx) > 1e-3 ? (F1 - F0) / dx : clamp(0.5 * (x0 + x1), 0.0, 1.0);
+  return mean * (y1 - y0);
+}
+
 float pixelCoverage(vec2 pixel, vec2 p0, vec2 p1, vec2 p2) {
-  vec2 poly[8], clipped[8];
-  poly[0] = p0 - pixel;
-  poly[1] = p1 - pixel;
-  poly[2] = p2 - pixel;
-  int count = 3;
-  for (int side = 0; side < 4; ++side) {
-    int axis = side & 1;
-    float bound = side < 2 ? 0.0 : 1.0, sgn = side < 2 ? 1.0 : -1.0;  // inside: sgn·(x − bound) ≥ 0
-    int out_ = 0;
-    for (int i = 0; i < count && i < 8; ++i) {
-      vec2 a = poly[i], b = poly[(i + 1) % count];
-      float da = sgn * (a[axis] - bound), db = sgn * (b[axis] - bound);
-      if (da >= 0.0 && out_ < 8) clipped[out_++] = a;
-      if ((da >= 0.0) != (db >= 0.0) && out_ < 8) clipped[out_++] = mix(a, b, da / (da - db));
-    }
-    count = out_;
-    for (int i = 0; i < count; ++i) poly[i] = clipped[i];
-    if (count < 3) return 0.0;
-  }
-  float twice = 0.0;
-  for (int i = 0; i < count; ++i) {
-    vec2 a = poly[i], b = poly[(i + 1) % count];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return clamp(0.5 * abs(twice), 0.0, 1.0);
+  vec2 a = p0 - pixel, b = p1 - pixel, c = p2 - pixel;
+  float area = edgeCoverage(a, b) + edgeCoverage(b, c) + edgeCoverage(c, a);
+  return clamp(abs(area), 0.0, 1.0);
 }
 
 bool inBox(ivec3 c, ivec4 lo, ivec4 hi) { return all(greaterThanEqual(c, lo.xyz)) && all(lessThan(c, hi.xyz)); }
