@@ -85,5 +85,26 @@ TEST(ViewerCamera, ControlBytesInArgumentsAreEscapedInTheError) {
   EXPECT_EQ(r.lines.at(0).find('\x1b'), std::string::npos) << r.lines.at(0);
 }
 
+// A jump (reset, or a new position) asks the renderer once to cut its history, so nothing
+// of the old view is reprojected into the new one; turning or moving smoothly does not.
+TEST(ViewerCamera, JumpsAskForOneHistoryCutAndTurnsDoNot) {
+  CameraController c(Camera{}, glm::vec3(0.0f), 2.0f);
+  EXPECT_TRUE(c.takeCut());  // the first view has no history either
+  EXPECT_FALSE(c.takeCut());
+  ASSERT_TRUE(run(c, {"rotate", "10", "5"}).ok);
+  ASSERT_TRUE(run(c, {"lookat", "1", "0", "0"}).ok);
+  CameraInput input;
+  input.move = glm::vec3(0.0f, 0.0f, 1.0f);
+  c.update(input, 0.1f);
+  EXPECT_FALSE(c.takeCut());
+  ASSERT_TRUE(run(c, {"reset"}).ok);
+  EXPECT_TRUE(c.takeCut());
+  EXPECT_FALSE(c.takeCut());
+  ASSERT_TRUE(run(c, {"position", "1", "2", "3"}).ok);
+  EXPECT_TRUE(c.takeCut());
+  EXPECT_FALSE(run(c, {"position", "inf", "0", "0"}).ok);
+  EXPECT_FALSE(c.takeCut());  // refused: the camera did not move
+}
+
 }  // namespace
 }  // namespace bounce::viewer

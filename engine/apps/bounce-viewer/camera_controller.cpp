@@ -38,6 +38,7 @@ CameraController::CameraController(const Camera& home, glm::vec3 sceneCentre, fl
 }
 
 void CameraController::reset() {
+  cut_ = true;
   mode_ = Mode::Fly;
   position_ = home_.position();
   lookAt(position_ + home_.forward());
@@ -139,6 +140,7 @@ ConsoleResult CameraController::execute(const std::vector<std::string>& args) {
     speed_ = numbers[0];
   } else if (what == "position" && expect(3)) {
     position_ = point();
+    cut_ = true;
   } else if (what == "lookat" && expect(3)) {
     if (!lookAt(point()))
       return fail(

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bounce::viewer {
@@ -33,6 +34,10 @@ class CameraController {
   void update(const CameraInput& input, float seconds);
   /// Back to the glTF camera, in fly mode.
   void reset();
+  /// True once after the camera jumped (reset, or `camera position`) rather than moved:
+  /// the renderer should cut its history, since no pixel of the last frame is worth
+  /// reprojecting into the new view.
+  bool takeCut() { return std::exchange(cut_, false); }
 
   Camera camera() const;
   Mode mode() const { return mode_; }
@@ -63,6 +68,7 @@ class CameraController {
   float speed_ = 1.0f;
   glm::vec3 target_{0.0f};
   float distance_ = 1.0f;
+  bool cut_ = false;
 };
 
 }  // namespace bounce::viewer

@@ -432,6 +432,7 @@ void Viewer::renderAndPresent() {
   const float percent = nextScreenPercentage();
   uint32_t factor = std::clamp(uint32_t(std::lround(100.0f / std::max(percent, 1.0f))), 1u, 16u);
   const FrameView full = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
+  if (camera_->takeCut()) renderer_->cutHistory();
   const uint64_t state = refinementState(full);
   if (state != refinementState_) {
     refinement_.reset(rect.extent.width, rect.extent.height, factor);
