@@ -130,9 +130,18 @@ vec4 downsampleFacing(vec4 child[8], int d) {
   return vec4((e * 0.25) / vxgiAlphaPerDensity(density, 1.0), density);
 }
 
-// Stores the block's value: into the clipped level (with its guard copies) or a mip.
+// Stores the block's value: into the clipped level (with its guard copies) or a mip. In a
+// clipped level it also notes whether anything non-zero was stored, for the brick flags.
 #if DST_STACKED
-#define STORE_OUTPUT(image, sign, local, value) VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, value)
+#include "vxgi/scratch.glsl"
+layout(std430, binding = 61) buffer VxgiBrickFlags { uint brickFlags[]; };  // scratch.glsl
+bool storedSomething = false;
+#define STORE_OUTPUT(image, sign, local, value)                                        \
+  {                                                                                    \
+    vec4 v_ = value;                                                                   \
+    storedSomething = storedSomething || any(notEqual(v_, vec4(0.0)));                 \
+    VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, v_)     \
+  }
 #else
 #define STORE_OUTPUT(image, sign, local, value) imageStore(image, local, value);
 #endif
@@ -176,5 +185,9 @@ void main() {
   LOAD_BLOCK(SRC5, SRC_NEGATIVE, local, block)
   STORE_OUTPUT(DST5, DST_NEGATIVE, local, downsampleFacing(block, 5))
 #endif
+#endif
+#if DST_STACKED
+  // The resolve may skip a brick flagged 0 as air: a brick this pass filled is not.
+  if (storedSomething) brickFlags[pc.dstMin.w * vxgiBricksPerLevel() + vxgiBrickIndex(vxgiWrap(pc.dstMin.xyz + local))] = 1u;
 #endif
 }

@@ -6,6 +6,10 @@
 //   radiance  L = Σ radiance·weight / Σ coverage (weight = coverage when proportional)
 //   emittance = L × density
 // The next voxelization clears the scratch volume.
+//
+// VXGI_RESOLVE_BRICK_LIST 1 (a level resolved whole): one workgroup per brick of the list
+// brick_list.comp made, by indirect dispatch, so the air that is already stored as zeros is
+// never dispatched. 0: every voxel of the box (boxes of a partial re-voxelization).
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
@@ -20,9 +24,16 @@ layout(push_constant) uniform Push {
   ivec4 boxSize;  // xyz: voxels
   ivec4 scratchLayout;  // x: channels per row, y: channels per direction
   float storageScale;   // RGBA8 emittance stores radiance × this
+  int bricksPerGroup;   // brick list: bricks each workgroup resolves, one after the other
 } pc;
 
 layout(binding = 21, r32f) uniform readonly image3D scratch;
+#if VXGI_RESOLVE_BRICK_LIST
+layout(std430, binding = 63) readonly buffer VxgiBrickList {
+  uint listedBricks;
+  uint bricks[];
+};
+#endif
 #if VXGI_AO_MODE
 // Densities of facing directions 3i..3i+2 in texture i.
 layout(binding = 30, rgba8) uniform writeonly image3D voxelsOut0;
@@ -52,11 +63,7 @@ vec4 encodeVoxel(vec3 emittance, float density) {
 #endif
 }
 
-void main() {
-  ivec3 local = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(local, pc.boxSize.xyz))) return;
-  int level = pc.boxMin.w;
-  ivec3 t = vxgiWrap(pc.boxMin.xyz + local);
+void resolveVoxel(ivec3 t, int level) {
   int per = pc.scratchLayout.y;
   float density[6];
   vec3 emittance[6];
@@ -106,5 +113,24 @@ void main() {
   VXGI_STORE_CLIP(voxelsOut1, t, level, 1, encodeVoxel(emittance[4], density[4]))
   VXGI_STORE_CLIP(voxelsOut2, t, level, 1, encodeVoxel(emittance[5], density[5]))
 #endif
+#endif
+}
+
+void main() {
+  int level = pc.boxMin.w;
+#if VXGI_RESOLVE_BRICK_LIST
+  // The level is resolved whole: brick after brick of the list, one voxel per invocation.
+  for (int k = 0; k < pc.bricksPerGroup; ++k) {
+    uint slot = gl_WorkGroupID.x * uint(pc.bricksPerGroup) + uint(k);
+    if (slot >= listedBricks) return;
+    // n is a power of two: masks and shifts, not a division per lane.
+    int brick = int(bricks[slot]), n = vxgiBricksPerAxis(), shift = findLSB(n);
+    ivec3 b = ivec3(brick & (n - 1), (brick >> shift) & (n - 1), brick >> (2 * shift));
+    resolveVoxel((b << VXGI_BRICK_SHIFT) + ivec3(gl_LocalInvocationID), level);
+  }
+#else
+  ivec3 local = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(local, pc.boxSize.xyz))) return;
+  resolveVoxel(vxgiWrap(pc.boxMin.xyz + local), level);
 #endif
 }

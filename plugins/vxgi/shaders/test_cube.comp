@@ -22,6 +22,7 @@ layout(push_constant) uniform Push {
 } pc;
 
 layout(binding = 21, r32f) uniform coherent image3D scratch;
+layout(std430, binding = 60) buffer VxgiBrickOccupancy { uint brickOccupancy[]; };  // scratch.glsl
 
 void main() {
   ivec3 local = ivec3(gl_GlobalInvocationID);
@@ -35,6 +36,7 @@ void main() {
   if (any(lessThanEqual(overlap, vec3(0.0)))) return;
   vec3 coverage = vec3(overlap.y * overlap.z, overlap.x * overlap.z, overlap.x * overlap.y);
   ivec3 t = vxgiWrap(voxel);
+  brickOccupancy[vxgiBrickIndex(t)] = 1u;
   int per = pc.scratchLayout.y;
   for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
     float w = coverage[d % 3];

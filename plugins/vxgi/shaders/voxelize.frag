@@ -26,6 +26,8 @@ layout(binding = 28) uniform sampler2D baseColorTexture;
 layout(binding = 29) uniform sampler2D emissiveTexture;
 
 layout(binding = 21, r32f) uniform coherent image3D scratch;
+// Bricks that received sums this frame (vxgi/scratch.glsl): the resolve skips the others.
+layout(std430, binding = 60) buffer VxgiBrickOccupancy { uint brickOccupancy[]; };
 // Per material: x thickness (voxels), y proportional emittance, z omni-directional.
 layout(std430, binding = 22) readonly buffer VxgiMaterialParams { vec4 materialParams[]; };
 // Per light: 1 when it is flagged "VXGI indirect lighting".
@@ -180,5 +182,7 @@ void main() {
       }
     }
     countWork(WORK_IMAGE_BYTES, 8u * atomics);
+    // Every fragment that touches the brick stores the same 1: no atomic needed.
+    if (atomics > 0u) brickOccupancy[vxgiBrickIndex(t)] = 1u;
   }
 }

@@ -47,6 +47,9 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
     mips_.push_back(std::make_unique<PersistentTexture>(
         ao ? fmt::format("VXGI.OpacityMips{}", i) : fmt::format("VXGI.FacingMips{}", i),
         mipDesc(format, voxelFormat(format))));
+  const uint64_t bricks = uint64_t(format.mapSize / kBrickVoxels);
+  brickFlags_ = std::make_unique<PersistentBuffer>(
+      "VXGI.BrickFlags", BufferDesc{bricks * bricks * bricks * format.stackLevels * sizeof(uint32_t)});
   return true;
 }
 
@@ -54,6 +57,10 @@ ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
   ClipMapHandles h;
   for (auto& t : clip_) h.clip.push_back(graph.importTexture(*t));
   for (auto& t : mips_) h.mips.push_back(graph.importTexture(*t));
+  // The executor allocates on first use, contents undefined (and so are the textures'):
+  // this frame voxelizes everything, and must first mark every brick as possibly non-zero.
+  h.brickFlagsUndefined = brickFlags_->allocation() == nullptr;
+  h.brickFlags = graph.importBuffer(*brickFlags_);
   return h;
 }
 

@@ -21,6 +21,13 @@ namespace bounce::vxgi {
 struct ClipMapHandles {
   std::vector<TextureHandle> clip, mips;
   BufferHandle constants;  ///< ClipMapConstants for this frame
+  /// Per 4³ brick of every clipped level (toroidal, as the voxels): 0 when all its texels
+  /// are known to be zero, so a re-voxelization need not resolve it while it stays empty
+  /// (vxgi/scratch.glsl, VxgiBrickFlags).
+  BufferHandle brickFlags;
+  /// True when brickFlags' contents are undefined (just created): the first voxelization
+  /// sets every flag, so every brick is resolved once.
+  bool brickFlagsUndefined = false;
 };
 
 class ClipMapTextures {
@@ -44,7 +51,11 @@ class ClipMapTextures {
   ClipMapFormat format_{};
   bool configured_ = false;
   std::vector<std::unique_ptr<PersistentTexture>> clip_, mips_;
+  std::unique_ptr<PersistentBuffer> brickFlags_;
 };
+
+/// Voxels per side of a brick of the clip-map (VXGI_BRICK_SHIFT in vxgi/scratch.glsl).
+inline constexpr uint32_t kBrickVoxels = 4;
 
 /// std430 VxgiClipMap in clip_map.glsl.
 struct ClipMapConstants {

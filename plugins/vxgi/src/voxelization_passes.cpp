@@ -19,6 +19,23 @@ gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file,
   return {shaders / file, shaderDefines(format)};
 }
 
+// A shader with one more define (0 or 1).
+gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file, const ClipMapFormat& format,
+                         const char* define, bool value) {
+  gpu::ShaderSource s = shader(shaders, file, format);
+  s.defines.emplace_back(define, value ? "1" : "0");
+  return s;
+}
+
+// Bricks one resolve workgroup takes from the brick list (brick_list.comp): a power of
+// two that keeps the indirect dispatch within 65535 workgroups, the least every device
+// allows (a 256³ level has 262144 bricks).
+uint32_t bricksPerResolveGroup(uint32_t bricksPerLevel) {
+  uint32_t k = 1;
+  while ((bricksPerLevel + k - 1) / k > 65535u) k *= 2;
+  return k;
+}
+
 // downsample.comp for one of its modes: 0 clipped level → the next one's inner box, 1 the
 // coarsest clipped level → mip 0, 2 mip → mip (each mode reads and writes other layouts).
 gpu::ShaderSource downsampleShader(const std::filesystem::path& shaders, const ClipMapFormat& format,
@@ -62,6 +79,7 @@ static_assert(sizeof(VoxelizePush) <= 112);
 struct ResolvePush {
   glm::ivec4 boxMin, boxSize, scratchLayout;
   float storageScale;
+  int32_t bricksPerGroup;
 };
 
 struct TestCubePush {
@@ -135,15 +153,25 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                 Access::TransferDst);
     lightBuffer = b.write(b.createBuffer("VXGI.LightFlags", {lightFlags.size() * sizeof(uint32_t)}),
                           Access::TransferDst);
+    // Brick flags just allocated hold anything: mark every brick as possibly non-zero, so
+    // this first voxelization resolves (and clears) the whole clip-map.
+    const bool fillFlags = handles.brickFlagsUndefined;
+    if (fillFlags) handles.brickFlags = b.write(handles.brickFlags, Access::TransferDst);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
-    BufferHandle mb = materialBuffer, lb = lightBuffer;
+    BufferHandle mb = materialBuffer, lb = lightBuffer, flags = handles.brickFlags;
     return [=](PassContext& ctx) {
       ctx.upload(mb, materialParams.data(), materialParams.size() * sizeof(glm::vec4));
       ctx.upload(lb, lightFlags.data(), lightFlags.size() * sizeof(uint32_t));
+      if (fillFlags) vkCmdFillBuffer(ctx.cmd(), ctx.buffer(flags).handle(), 0, VK_WHOLE_SIZE, 1u);
     };
   });
 
   TextureHandle scratchTexture;
+  BufferHandle occupancy;  // VxgiBrickOccupancy: one uint per brick of the level being voxelized
+  BufferHandle resolveArguments, brickList;  // brick_list.comp's indirect dispatch and bricks
+  const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
+  const uint32_t bricksPerLevel = bricksPerAxis * bricksPerAxis * bricksPerAxis;
+  const uint32_t bricksPerGroup = bricksPerResolveGroup(bricksPerLevel);
   for (uint32_t level = 0; level < format.stackLevels; ++level) {
     const std::vector<VoxelBox> boxes = plan.boxes[level];
     const VoxelBox inner = layout.innerBox(level);
@@ -169,13 +197,27 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     graph.addPass(
         fmt::format("VXGI.ClearScratch.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
           if (!scratchTexture.valid()) scratchTexture = b.createTexture("VXGI.Scratch", scratch.desc(format));
+          if (!occupancy.valid()) {
+            occupancy = b.createBuffer("VXGI.BrickOccupancy", {uint64_t(bricksPerLevel) * sizeof(uint32_t)});
+            resolveArguments = b.createBuffer("VXGI.ResolveArguments", {sizeof(glm::uvec4)});
+            brickList = b.createBuffer("VXGI.BrickList", {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
+          }
           scratchTexture = b.write(scratchTexture, Access::TransferDst);
+          occupancy = b.write(occupancy, Access::TransferDst);
+          resolveArguments = b.write(resolveArguments, Access::TransferDst);
+          brickList = b.write(brickList, Access::TransferDst);
           b.condition(decide);
           TextureHandle sums = scratchTexture;
+          BufferHandle occupied = occupancy, arguments = resolveArguments, list = brickList;
           return [=](PassContext& ctx) {
             VkClearColorValue zero{};
             VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
             vkCmdClearColorImage(ctx.cmd(), ctx.image(sums).handle(), ctx.layout(sums), &zero, 1, &range);
+            vkCmdFillBuffer(ctx.cmd(), ctx.buffer(occupied).handle(), 0, VK_WHOLE_SIZE, 0u);
+            // No workgroups and no bricks listed yet (brick_list.comp counts them).
+            const glm::uvec4 noGroups(0u, 1u, 1u, 0u);
+            vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(arguments).handle(), 0, sizeof(noGroups), &noGroups);
+            vkCmdFillBuffer(ctx.cmd(), ctx.buffer(list).handle(), 0, sizeof(uint32_t), 0u);
             const VkExtent3D e = ctx.image(sums).extent();
             ctx.addWork(WorkUnit::ImageBytes, uint64_t(e.width) * e.height * e.depth * 4u);  // R32F written
           };
@@ -190,6 +232,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           return PassDecision::skip(why);
         });
       scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+      occupancy = b.write(occupancy, Access::StorageReadWrite);
       TextureDesc targetDesc;
       targetDesc.format = VK_FORMAT_R8_UNORM;
       targetDesc.width = targetDesc.height = format.mapSize;
@@ -204,6 +247,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
       b.condition(decide);
       TextureHandle scratchHandle = scratchTexture;
+      BufferHandle occupied = occupancy;
       return [=](PassContext& ctx) {
         gpu::GraphicsPipelineDesc pd;
         pd.vertex = shader(shaders, "voxelize.vert", format);
@@ -226,7 +270,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             // never read it, but the binding must still be a depth array.
             .textureOr("shadowMaps", shadows, gpu::FallbackTexture::FarDepth2DArray,
                        gpu::SamplerKind::ShadowCompare)
-            .storage("scratch", scratchHandle);
+            .storage("scratch", scratchHandle)
+            .buffer("VxgiBrickOccupancy", occupied);
         ctx.beginRendering({.colors = {{target, std::nullopt}}});
         uint64_t triangles = 0;
         for (size_t i = 0; i < boxes.size(); ++i) {
@@ -254,14 +299,16 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     if (testCube)
       graph.addPass(fmt::format("VXGI.TestCube.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
         scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+        occupancy = b.write(occupancy, Access::StorageReadWrite);
         BufferHandle constants = b.read(handles.constants, Access::StorageRead);
         b.condition(decide);
         TextureHandle sums = scratchTexture;
+        BufferHandle occupied = occupancy;
         const Aabb cube = *testCube;
         return [=](PassContext& ctx) {
           const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "test_cube.comp", format));
           gpu::Bindings bind;
-          bind.buffer("clipMap", constants).storage("scratch", sums);
+          bind.buffer("clipMap", constants).storage("scratch", sums).buffer("VxgiBrickOccupancy", occupied);
           for (const VoxelBox& box : boxes) {
             const glm::ivec3 size = box.max - box.min;
             TestCubePush push{glm::ivec4(box.min, int32_t(level)),
@@ -276,22 +323,65 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         };
       });
 
+    // A level resolved whole (a full re-voxelization) need only write the bricks that
+    // received sums or may hold something from before: brick_list.comp lists them, and the
+    // resolve runs over the list by indirect dispatch. Boxes are resolved voxel by voxel.
+    const glm::ivec3 fullLevel(int32_t(format.mapSize));
+    const bool wholeLevel = boxes.size() == 1 && boxes[0].max - boxes[0].min == fullLevel;
+    graph.addPass(fmt::format("VXGI.BrickList.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+      BufferHandle occupied = b.read(occupancy, Access::StorageRead);
+      BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
+      if (wholeLevel) {
+        resolveArguments = b.write(resolveArguments, Access::StorageReadWrite);
+        brickList = b.write(brickList, Access::StorageReadWrite);
+      }
+      b.condition(decide);
+      BufferHandle flags = handles.brickFlags, arguments = resolveArguments, list = brickList;
+      return [=](PassContext& ctx) {
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(
+            shader(shaders, "brick_list.comp", format, "VXGI_WHOLE_LEVEL", wholeLevel));
+        gpu::Bindings bind;
+        bind.buffer("clipMap", constants)
+            .buffer("VxgiBrickOccupancy", occupied)
+            .buffer("VxgiBrickFlags", flags);
+        if (wholeLevel) bind.buffer("VxgiResolveArguments", arguments).buffer("VxgiBrickList", list);
+        const glm::ivec2 push{int32_t(level), int32_t(bricksPerGroup)};
+        ctx.dispatchThreads(pipeline, bind, glm::uvec3(bricksPerLevel, 1, 1), push);
+      };
+    });
+
     graph.addPass(fmt::format("VXGI.Resolve.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       TextureHandle sums = b.read(scratchTexture, Access::StorageRead);
       BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      BufferHandle arguments, list;
+      if (wholeLevel) {
+        arguments = b.read(resolveArguments, Access::Indirect);
+        list = b.read(brickList, Access::StorageRead);
+      }
       writeAll(b, handles.clip);
       b.condition(decide);
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "resolve.comp", format));
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(
+            shader(shaders, "resolve.comp", format, "VXGI_RESOLVE_BRICK_LIST", wholeLevel));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants).storage("scratch", sums);
         bindStorage(bind, "voxelsOut", h.clip);
+        const glm::ivec4 scratchPush(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0);
+        if (wholeLevel) {
+          bind.buffer("VxgiBrickList", list);
+          ResolvePush push{glm::ivec4(0, 0, 0, int32_t(level)), glm::ivec4(0), scratchPush, storageScale,
+                           int32_t(bricksPerGroup)};
+          ctx.bind(pipeline, bind);
+          ctx.pushConstants(pipeline, push);
+          vkCmdDispatchIndirect(ctx.cmd(), ctx.buffer(arguments).handle(), 0);
+          return;
+        }
         for (const VoxelBox& box : boxes) {
           const glm::ivec3 size = box.max - box.min;
-          ResolvePush push{glm::ivec4(box.min, int32_t(level)), glm::ivec4(size, 0),
-                           glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
-                           storageScale};
+          ResolvePush push{glm::ivec4(box.min, int32_t(level)), glm::ivec4(size, 0), scratchPush,
+                           storageScale, 1};
           ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
         }
       };
@@ -301,6 +391,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     graph.addPass(fmt::format("VXGI.Downsample.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       BufferHandle constants = b.read(handles.constants, Access::StorageRead);
       writeAll(b, handles.clip);
+      handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
       b.condition([work, reason] {
         return work ? PassDecision::run("the finer level changed") : PassDecision::skip(reason);
       });
@@ -308,7 +399,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(shaders, format, 0));
         gpu::Bindings bind;
-        bind.buffer("clipMap", constants);
+        bind.buffer("clipMap", constants).buffer("VxgiBrickFlags", h.brickFlags);
         // Source and destination are the same textures, different levels of the stack.
         bindStorage(bind, "voxelsSrc", h.clip);
         bindStorage(bind, "voxelsDst", h.clip);

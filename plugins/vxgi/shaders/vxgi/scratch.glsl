@@ -11,4 +11,21 @@ ivec3 vxgiScratchCoord(ivec3 t, int channel, int perRow) {
   return t + ivec3((channel & (perRow - 1)) * n, 0, (channel >> findLSB(perRow)) * n);
 }
 
+// Bricks of 4³ voxels (kBrickVoxels in src/clip_map_textures.h), in toroidal voxel space,
+// so a brick is the same 64 texels however the level scrolls. Two per-brick buffers let a
+// re-voxelization skip the clip-map's air: VxgiBrickOccupancy (this level, this frame: a
+// fragment or the test cube added to the brick's sums) and VxgiBrickFlags (every level,
+// persistent: 0 when all the brick's texels are known to hold zero).
+const int VXGI_BRICK_SHIFT = 2;
+int vxgiBricksPerAxis() { return clipMap.mapSize >> VXGI_BRICK_SHIFT; }
+int vxgiBricksPerLevel() {
+  int n = vxgiBricksPerAxis();
+  return n * n * n;
+}
+int vxgiBrickIndex(ivec3 t) {
+  ivec3 b = t >> VXGI_BRICK_SHIFT;
+  int n = vxgiBricksPerAxis();
+  return (b.z * n + b.y) * n + b.x;
+}
+
 #endif

@@ -1,0 +1,53 @@
+#version 460
+// Voxelization, step 4a: which bricks (vxgi/scratch.glsl) of a level the resolve must
+// write, and what the persistent brick flags become.
+//
+// A level resolved whole (VXGI_WHOLE_LEVEL, a full re-voxelization) need only write the
+// bricks that received sums this frame or may hold non-zero texels from before: every
+// other brick is air and already stored as zeros. Those are appended to a list the resolve
+// then runs over by indirect dispatch, so the air is never dispatched at all (on lavapipe
+// a branch does not skip work: both sides run under a mask, and a resolve that only read
+// each brick's flag and returned took 105 ms of the 148 a full one did). After it, a
+// brick's flag is whether it received sums. A level resolved in boxes only adds the bricks
+// that received sums to the flags (the others keep theirs): flags stay conservative and
+// only clear on whole-level resolves. Downsampling sets the flags of the bricks it fills.
+#define VXGI_CLIP_MAP_TEXTURES 0
+#include "bounce/common.glsl"
+#include "vxgi/clip_map.glsl"
+#include "vxgi/scratch.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(push_constant) uniform Push {
+  int level;
+  int bricksPerGroup;  // bricks one resolve workgroup takes from the list (a power of two)
+} pc;
+
+layout(std430, binding = 60) readonly buffer VxgiBrickOccupancy { uint brickOccupancy[]; };
+layout(std430, binding = 61) buffer VxgiBrickFlags { uint brickFlags[]; };
+#if VXGI_WHOLE_LEVEL
+// x: workgroups for vkCmdDispatchIndirect (y, z: 1, set before this pass).
+layout(std430, binding = 62) buffer VxgiResolveArguments { uvec4 resolveArguments; };
+layout(std430, binding = 63) buffer VxgiBrickList {
+  uint listedBricks;
+  uint bricks[];
+};
+#endif
+
+void main() {
+  int brick = int(gl_GlobalInvocationID.x);
+  if (brick >= vxgiBricksPerLevel()) return;
+  int i = pc.level * vxgiBricksPerLevel() + brick;
+  bool occupied = brickOccupancy[brick] != 0u;
+#if VXGI_WHOLE_LEVEL
+  if (occupied || brickFlags[i] != 0u) {
+    uint slot = atomicAdd(listedBricks, 1u);
+    bricks[slot] = uint(brick);
+    // One more workgroup for every bricksPerGroup bricks listed.
+    if ((slot & uint(pc.bricksPerGroup - 1)) == 0u) atomicAdd(resolveArguments.x, 1u);
+  }
+  brickFlags[i] = occupied ? 1u : 0u;
+#else
+  if (occupied) brickFlags[i] = 1u;
+#endif
+}
