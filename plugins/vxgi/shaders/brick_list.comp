@@ -8,9 +8,9 @@
 // then runs over by indirect dispatch, so the air is never dispatched at all (on lavapipe
 // a branch does not skip work: both sides run under a mask, and a resolve that only read
 // each brick's flag and returned took 105 ms of the 148 a full one did). After it, a
-// brick's flag is whether it received sums. A level resolved in boxes only adds the bricks
-// that received sums to the flags (the others keep theirs): flags stay conservative and
-// only clear on whole-level resolves. Downsampling sets the flags of the bricks it fills.
+// brick's resolved bit is whether it received sums. A level resolved in boxes only adds the
+// bricks that received sums (the others keep theirs): flags stay conservative and only clear
+// on whole-level resolves. The downsampled bit is downsample_list.comp's.
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
@@ -46,8 +46,8 @@ void main() {
     // One more workgroup for every bricksPerGroup bricks listed.
     if ((slot & uint(pc.bricksPerGroup - 1)) == 0u) atomicAdd(resolveArguments.x, 1u);
   }
-  brickFlags[i] = occupied ? 1u : 0u;
+  brickFlags[i] = (occupied ? VXGI_BRICK_RESOLVED : 0u) | (brickFlags[i] & VXGI_BRICK_DOWNSAMPLED);
 #else
-  if (occupied) brickFlags[i] = 1u;
+  if (occupied) brickFlags[i] |= VXGI_BRICK_RESOLVED;
 #endif
 }

@@ -12,12 +12,14 @@
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
+#define WORK_COUNTERS_BINDING 50
+#include "bounce/work_counters.glsl"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(push_constant) uniform Push {
   ivec4 dstMin;   // mode 0: first voxel (world voxels of the destination level), w: level; else xyz 0
-  ivec4 dstSize;  // voxels to write
+  ivec4 dstSize;  // voxels to write; mode 0, w: bricks each workgroup takes from the list
 } pc;
 
 #if VXGI_AO_MODE || !VXGI_EMITTANCE_FP16
@@ -133,8 +135,14 @@ vec4 downsampleFacing(vec4 child[8], int d) {
 // Stores the block's value: into the clipped level (with its guard copies) or a mip. In a
 // clipped level it also notes whether anything non-zero was stored, for the brick flags.
 #if DST_STACKED
+// Mode 0 runs over the bricks of the inner box downsample_list.comp listed (by indirect
+// dispatch, one brick per workgroup), and flags those it stores something in.
 #include "vxgi/scratch.glsl"
-layout(std430, binding = 61) buffer VxgiBrickFlags { uint brickFlags[]; };  // scratch.glsl
+layout(std430, binding = 61) buffer VxgiBrickFlags { uint brickFlags[]; };
+layout(std430, binding = 63) readonly buffer VxgiDownsampleBricks {
+  uint listedBricks;
+  uint bricks[];
+};
 bool storedSomething = false;
 #define STORE_OUTPUT(image, sign, local, value)                                        \
   {                                                                                    \
@@ -159,9 +167,19 @@ vec4 downsampleDensities(vec4 packed[8], int firstDirection) {
 }
 #endif
 
-void main() {
-  ivec3 local = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(local, pc.dstSize.xyz))) return;
+void downsampleVoxel(ivec3 local) {
+#if DST_STACKED
+  storedSomething = false;
+  // 8 children read and 1 texel written per texture (the guard copies, 1/size of them,
+  // left out): the work is the listed bricks', known only here.
+#if VXGI_AO_MODE
+  countWork(WORK_IMAGE_BYTES, 9u * uint(VXGI_DIRECTIONS / 3) * 4u);
+#elif VXGI_EMITTANCE_FP16
+  countWork(WORK_IMAGE_BYTES, 9u * uint(VXGI_DIRECTIONS) * 8u);
+#else
+  countWork(WORK_IMAGE_BYTES, 9u * uint(VXGI_DIRECTIONS) * 4u);
+#endif
+#endif
   vec4 block[8];
 #if VXGI_AO_MODE
   LOAD_BLOCK(voxelsSrc0, 0, local, block)
@@ -187,7 +205,28 @@ void main() {
 #endif
 #endif
 #if DST_STACKED
-  // The resolve may skip a brick flagged 0 as air: a brick this pass filled is not.
-  if (storedSomething) brickFlags[pc.dstMin.w * vxgiBricksPerLevel() + vxgiBrickIndex(vxgiWrap(pc.dstMin.xyz + local))] = 1u;
+  // Resolves and downsamples skip bricks flagged 0 as air: one this pass filled is not.
+  if (storedSomething)
+    atomicOr(brickFlags[pc.dstMin.w * vxgiBricksPerLevel() + vxgiBrickIndex(vxgiWrap(pc.dstMin.xyz + local))],
+             VXGI_BRICK_DOWNSAMPLED);
+#endif
+}
+
+void main() {
+#if DST_STACKED
+  for (int k = 0; k < pc.dstSize.w; ++k) {
+    uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
+    if (slot >= listedBricks) return;
+    uint packed = bricks[slot];
+    ivec3 rel = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
+    ivec3 voxel = (((pc.dstMin.xyz >> VXGI_BRICK_SHIFT) + rel) << VXGI_BRICK_SHIFT) + ivec3(gl_LocalInvocationID);
+    ivec3 local = voxel - pc.dstMin.xyz;
+    // The brick may reach past the inner box, whose bounds need not be brick-aligned.
+    if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, pc.dstSize.xyz))) downsampleVoxel(local);
+  }
+#else
+  ivec3 local = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(local, pc.dstSize.xyz))) return;
+  downsampleVoxel(local);
 #endif
 }

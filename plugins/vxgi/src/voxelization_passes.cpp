@@ -168,7 +168,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
 
   TextureHandle scratchTexture;
   BufferHandle occupancy;  // VxgiBrickOccupancy: one uint per brick of the level being voxelized
-  BufferHandle resolveArguments, brickList;  // brick_list.comp's indirect dispatch and bricks
+  BufferHandle resolveArguments, brickList;            // brick_list.comp's indirect dispatch and bricks
+  BufferHandle downsampleArguments, downsampleBricks;  // downsample_list.comp's
   const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
   const uint32_t bricksPerLevel = bricksPerAxis * bricksPerAxis * bricksPerAxis;
   const uint32_t bricksPerGroup = bricksPerResolveGroup(bricksPerLevel);
@@ -201,14 +202,20 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             occupancy = b.createBuffer("VXGI.BrickOccupancy", {uint64_t(bricksPerLevel) * sizeof(uint32_t)});
             resolveArguments = b.createBuffer("VXGI.ResolveArguments", {sizeof(glm::uvec4)});
             brickList = b.createBuffer("VXGI.BrickList", {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
+            downsampleArguments = b.createBuffer("VXGI.DownsampleArguments", {sizeof(glm::uvec4)});
+            downsampleBricks =
+                b.createBuffer("VXGI.DownsampleBricks", {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
           }
           scratchTexture = b.write(scratchTexture, Access::TransferDst);
           occupancy = b.write(occupancy, Access::TransferDst);
           resolveArguments = b.write(resolveArguments, Access::TransferDst);
           brickList = b.write(brickList, Access::TransferDst);
+          downsampleArguments = b.write(downsampleArguments, Access::TransferDst);
+          downsampleBricks = b.write(downsampleBricks, Access::TransferDst);
           b.condition(decide);
           TextureHandle sums = scratchTexture;
-          BufferHandle occupied = occupancy, arguments = resolveArguments, list = brickList;
+          BufferHandle occupied = occupancy, arguments = resolveArguments, list = brickList,
+                       downsampleArgs = downsampleArguments, downsampleList = downsampleBricks;
           return [=](PassContext& ctx) {
             VkClearColorValue zero{};
             VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
@@ -218,6 +225,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             const glm::uvec4 noGroups(0u, 1u, 1u, 0u);
             vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(arguments).handle(), 0, sizeof(noGroups), &noGroups);
             vkCmdFillBuffer(ctx.cmd(), ctx.buffer(list).handle(), 0, sizeof(uint32_t), 0u);
+            vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(downsampleArgs).handle(), 0, sizeof(noGroups), &noGroups);
+            vkCmdFillBuffer(ctx.cmd(), ctx.buffer(downsampleList).handle(), 0, sizeof(uint32_t), 0u);
             const VkExtent3D e = ctx.image(sums).extent();
             ctx.addWork(WorkUnit::ImageBytes, uint64_t(e.width) * e.height * e.depth * 4u);  // R32F written
           };
@@ -388,8 +397,42 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     });
 
     if (level == 0) continue;
+    // The inner box's bricks whose finer bricks hold something, or that hold downsampled
+    // content from before (downsample_list.comp); the downsample runs over just those.
+    const glm::ivec3 innerSize = inner.max - inner.min;
+    // Bricks the inner box touches; >> floors (world voxels may be negative), as the shader.
+    const glm::ivec3 innerBricks = ((inner.max - 1) >> 2) - (inner.min >> 2) + 1;
+    static_assert(kBrickVoxels == 4);
+    graph.addPass(
+        fmt::format("VXGI.DownsampleList.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+          BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+          handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
+          downsampleArguments = b.write(downsampleArguments, Access::StorageReadWrite);
+          downsampleBricks = b.write(downsampleBricks, Access::StorageReadWrite);
+          b.condition([work, reason] {
+            return work ? PassDecision::run("the finer level changed") : PassDecision::skip(reason);
+          });
+          BufferHandle flags = handles.brickFlags, arguments = downsampleArguments, list = downsampleBricks;
+          return [=](PassContext& ctx) {
+            const gpu::Pipeline& pipeline =
+                ctx.pipelines().compute(shader(shaders, "downsample_list.comp", format));
+            gpu::Bindings bind;
+            bind.buffer("clipMap", constants)
+                .buffer("VxgiBrickFlags", flags)
+                .buffer("VxgiDownsampleArguments", arguments)
+                .buffer("VxgiDownsampleBricks", list);
+            DownsamplePush push{glm::ivec4(inner.min, int32_t(level)),
+                                glm::ivec4(inner.max, int32_t(bricksPerGroup))};
+            ctx.dispatchThreads(pipeline, bind,
+                                glm::uvec3(uint32_t(innerBricks.x * innerBricks.y * innerBricks.z), 1, 1),
+                                push);
+          };
+        });
+
     graph.addPass(fmt::format("VXGI.Downsample.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      BufferHandle arguments = b.read(downsampleArguments, Access::Indirect);
+      BufferHandle list = b.read(downsampleBricks, Access::StorageRead);
       writeAll(b, handles.clip);
       handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
       b.condition([work, reason] {
@@ -399,16 +442,17 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(shaders, format, 0));
         gpu::Bindings bind;
-        bind.buffer("clipMap", constants).buffer("VxgiBrickFlags", h.brickFlags);
+        bind.buffer("clipMap", constants)
+            .buffer("VxgiBrickFlags", h.brickFlags)
+            .buffer("VxgiDownsampleBricks", list);
         // Source and destination are the same textures, different levels of the stack.
         bindStorage(bind, "voxelsSrc", h.clip);
         bindStorage(bind, "voxelsDst", h.clip);
-        const glm::ivec3 size = inner.max - inner.min;
-        DownsamplePush push{glm::ivec4(inner.min, int32_t(level)), glm::ivec4(size, 0)};
-        ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
-        // Per output voxel: 8 children read and 1 texel written per texture (guard copies,
-        // 1/size of them, left out).
-        ctx.addWork(WorkUnit::ImageBytes, uint64_t(size.x) * size.y * size.z * 9u * format.bytesPerVoxel());
+        DownsamplePush push{glm::ivec4(inner.min, int32_t(level)),
+                            glm::ivec4(innerSize, int32_t(bricksPerGroup))};
+        ctx.bind(pipeline, bind);
+        ctx.pushConstants(pipeline, push);
+        vkCmdDispatchIndirect(ctx.cmd(), ctx.buffer(arguments).handle(), 0);
       };
     });
   }

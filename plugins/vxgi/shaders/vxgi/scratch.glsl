@@ -15,8 +15,11 @@ ivec3 vxgiScratchCoord(ivec3 t, int channel, int perRow) {
 // so a brick is the same 64 texels however the level scrolls. Two per-brick buffers let a
 // re-voxelization skip the clip-map's air: VxgiBrickOccupancy (this level, this frame: a
 // fragment or the test cube added to the brick's sums) and VxgiBrickFlags (every level,
-// persistent: 0 when all the brick's texels are known to hold zero).
+// persistent: 0 when all the brick's texels are known to hold zero). A flag has two bits:
+// what the resolve stored may be non-zero, and what downsampling stored (the inner box of
+// a coarser level) may be.
 const int VXGI_BRICK_SHIFT = 2;
+const uint VXGI_BRICK_RESOLVED = 1u, VXGI_BRICK_DOWNSAMPLED = 2u;
 int vxgiBricksPerAxis() { return clipMap.mapSize >> VXGI_BRICK_SHIFT; }
 int vxgiBricksPerLevel() {
   int n = vxgiBricksPerAxis();
