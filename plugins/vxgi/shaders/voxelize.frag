@@ -83,11 +83,15 @@ float pixelCoverage(vec2 pixel, vec2 p0, vec2 p1, vec2 p2) {
 
 bool inBox(ivec3 c, ivec4 lo, ivec4 hi) { return all(greaterThanEqual(c, lo.xyz)) && all(lessThan(c, hi.xyz)); }
 
-// Diffuse radiance a surface with normal N sends out: emission plus the flagged
-// lights' light it reflects (with their shadow maps) plus the optional constant ambient
-// (the seed's remedy for single-bounce specular).
-vec3 outgoingRadiance(vec3 N, vec3 albedo, vec3 emission) {
-  vec3 reflected = albedo * draw.ambient.rgb;
+// Diffuse radiance the two sides of a surface with normal n send out (`back` only when
+// double-sided, else 0): emission plus the flagged lights' light each side reflects (with
+// their shadow maps) plus the optional constant ambient (the seed's remedy for
+// single-bounce specular). One loop serves both sides, since a light reaches at most one
+// of them: on a CPU device a second call for the back side runs in full whether or not it
+// is needed (both sides of a branch run under a mask), and lighting was 40% of the pass.
+void outgoingRadiance(vec3 n, bool doubleSided, vec3 albedo, vec3 emission, out vec3 front, out vec3 back) {
+  vec3 reflectedFront = albedo * draw.ambient.rgb;
+  vec3 reflectedBack = doubleSided ? reflectedFront : vec3(0.0);
   uint lightCount = uint(draw.ambient.w);
   for (uint i = 0u; i < lightCount; ++i) {
     if (lightFlags[i] == 0u) continue;
@@ -95,11 +99,18 @@ vec3 outgoingRadiance(vec3 N, vec3 albedo, vec3 emission) {
     vec3 L, E;
     float dist;
     lightIncidence(light, gWorld, L, E, dist);
-    float cosine = dot(N, L);
-    if (cosine <= 0.0 || all(equal(E, vec3(0.0)))) continue;
-    reflected += albedo * E * cosine * shadowFactor(light, gWorld, N, L, shadowMaps);
+    float cosine = dot(n, L);
+    bool lit = cosine > 0.0 || (doubleSided && cosine < 0.0);
+    if (!lit || all(equal(E, vec3(0.0)))) continue;
+    vec3 N = cosine > 0.0 ? n : -n;  // the side the light reaches
+    vec3 reflected = albedo * E * abs(cosine) * shadowFactor(light, gWorld, N, L, shadowMaps);
+    if (cosine > 0.0)
+      reflectedFront += reflected;
+    else
+      reflectedBack += reflected;
   }
-  return emission + reflected * INV_PI;
+  front = emission + reflectedFront * INV_PI;
+  back = doubleSided ? emission + reflectedBack * INV_PI : vec3(0.0);
 }
 
 void main() {
@@ -143,8 +154,10 @@ void main() {
   bool proportional = params.y > 0.5, omni = params.z > 0.5;
 
 #if !VXGI_AO_MODE
-  vec3 front = sanitize(outgoingRadiance(n, albedo, emission), HALF_MAX);
-  vec3 back = doubleSided ? sanitize(outgoingRadiance(-n, albedo, emission), HALF_MAX) : vec3(0.0);
+  vec3 front, back;
+  outgoingRadiance(n, doubleSided, albedo, emission, front, back);
+  front = sanitize(front, HALF_MAX);
+  back = sanitize(back, HALF_MAX);
 #endif
   int perDirection = draw.scratchLayout.y;  // 4 (rgb·w, w) or 1 (w, AO mode)
   // Integer bounds: a float counter stops advancing at large magnitudes, and a corner

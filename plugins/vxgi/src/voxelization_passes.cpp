@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 
 namespace bounce::vxgi {
 
@@ -185,6 +186,20 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       const Aabb w = layout.worldBox(level, box);
       worldBoxes.push_back(Aabb{w.min - glm::vec3(reach), w.max + glm::vec3(reach)});
     }
+    // The inner box is downsampled from the finer level and voxelize.frag skips its voxels:
+    // a surface whose every voxel lies there (its bounds, grown by the reach and one more
+    // voxel for the dilated fragments, inside the box) is not drawn at this level. On the
+    // Cornell box that is every surface at every level but the finest.
+    std::optional<Aabb> innerWorld;
+    if (level > 0) {
+      const Aabb w = layout.worldBox(level, inner);
+      const glm::vec3 margin(reach + layout.levels()[level].voxelSize);
+      innerWorld = Aabb{w.min + margin, w.max - margin};
+    }
+    auto insideInner = [innerWorld](const Aabb& b) {
+      return innerWorld && glm::all(glm::greaterThanEqual(b.min, innerWorld->min)) &&
+             glm::all(glm::lessThanEqual(b.max, innerWorld->max));
+    };
     const uint64_t voxels = plan.voxels(level);
     // Low-detail meshes: the deviation a level tolerates scales with its voxels.
     const float meshError = settings.voxelizationMeshError.get() * layout.levels()[level].voxelSize;
@@ -295,7 +310,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
               pipeline, common,
               [&](const gpu::GpuDraw& d) {
                 return d.material < voxelized.size() && voxelized[d.material] &&
-                       d.worldBounds.overlaps(world);
+                       d.worldBounds.overlaps(world) && !insideInner(d.worldBounds);
               },
               &push, sizeof(push), meshError);
         }
