@@ -1,7 +1,7 @@
 #version 460
 // Downsampling a clipped level's inner box from the finer level (downsample.comp, mode 0):
 // which of its bricks (vxgi/scratch.glsl) need it. A brick whose eight finer bricks are all
-// flagged zero, and which holds no downsampled content from before, would only be rewritten
+// flagged zero, and which is flagged zero itself, would only be rewritten
 // with the zeros it holds: it is left out of the list the downsample then runs over by
 // indirect dispatch (on lavapipe a branch skips no work). A listed brick loses its
 // downsampled bit here and gets it back from the downsample where it stores something.
@@ -44,7 +44,11 @@ void main() {
   bool needed = false;
   for (int c = 0; c < 8; ++c) needed = needed || flagged(level - 1, 2 * brick + ivec3(c & 1, (c >> 1) & 1, c >> 2));
   int i = level * vxgiBricksPerLevel() + vxgiBrickIndex((brick << VXGI_BRICK_SHIFT) & ivec3(clipMap.mapSize - 1));
-  needed = needed || (brickFlags[i] & VXGI_BRICK_DOWNSAMPLED) != 0u;
+  // Either bit: a brick that entered the inner box when the finer level scrolled may hold
+  // this level's own voxels where the finer level has none (a thickness of 2 voxels here
+  // reaches 4 of the finer level's, whose own thickness stops at 2), and they must become
+  // the finer level's air.
+  needed = needed || brickFlags[i] != 0u;
   if (!needed) return;
   brickFlags[i] &= ~VXGI_BRICK_DOWNSAMPLED;
   uint slot = atomicAdd(listedBricks, 1u);

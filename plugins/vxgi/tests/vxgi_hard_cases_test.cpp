@@ -229,6 +229,45 @@ TEST_F(VxgiHardCases, SubVoxelCameraStepsDoNotMakeIndirectLightFlicker) {
   EXPECT_LT(worst, 0.05);
 }
 
+// A camera that walks several voxels scrolls every level: slabs are re-voxelized in
+// boxes, each level's inner box moves, and bricks that held a coarse level's own voxels
+// become downsampled ones. After a first frame that re-voxelized everything (so the brick
+// flags know where the air is), the walk must end where a fresh start at the last
+// position does. Thick walls make the coarse levels hold voxels their finer level leaves
+// empty (a thickness is in each level's own voxels), which downsampling must clear.
+TEST_F(VxgiHardCases, CameraWalkScrollsToWhatAFreshStartVoxelizes) {
+  const std::vector<std::string> settings =
+      with(kSmall, {"Material.VxgiVoxelizationThickness=2", "r.VXGI.TemporalFilter=0"});
+  const float voxel = 2.1f * 1.05f / 16.0f;  // automaticVoxelSize of the box's bounds at 32³
+  const glm::vec3 first = {0.0f, 1.0f, 0.6f}, step = {0.3f * voxel, 0.2f * voxel, -1.2f * voxel};
+  const int steps = 8;
+  start("content/cornell_box.gltf", settings, "VXGI");
+  RenderedFrame walked;
+  for (int i = 0; i <= steps; ++i)
+    walked = render(viewFrom(first + float(i) * step, 24, 24), {"indirect-irradiance"});
+  const ImageBuffer incremental = walked.images.at("indirect-irradiance");
+  const ImageBuffer before =
+      render(viewFrom(first, 24, 24), {"indirect-irradiance"}).images.at("indirect-irradiance");
+  finish();
+  start("content/cornell_box.gltf", settings, "VXGI");
+  const ImageBuffer fresh = render(viewFrom(first + float(steps) * step, 24, 24), {"indirect-irradiance"})
+                                .images.at("indirect-irradiance");
+  finish();
+  double worst = 0, level = 0;
+  for (uint32_t y = 0; y < 24; ++y)
+    for (uint32_t x = 0; x < 24; ++x)
+      for (uint32_t c = 0; c < 3; ++c) {
+        worst = std::max(worst, double(std::abs(incremental.at(x, y, c) - fresh.at(x, y, c))));
+        level = std::max(level, double(fresh.at(x, y, c)));
+      }
+  std::printf("camera walk of %d steps: largest difference to a fresh start %.6f W/m² (largest value %.3f)\n",
+              steps, worst, level);
+  ASSERT_GT(level, 0.1);
+  EXPECT_TRUE(allFinite(before));
+  // Float atomics add in a different order: allow a rounding-level difference.
+  EXPECT_LT(worst, 1e-3 * level);
+}
+
 // Moving the small emitter re-voxelizes only its old and new boxes, and the result
 // equals voxelizing the moved scene from scratch: no stale voxels where it was. The
 // scene has no lights, so nothing outside those boxes changes (a moved shadow caster
