@@ -20,12 +20,22 @@ gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file,
   return {shaders / file, shaderDefines(format)};
 }
 
-// A shader with one more define (0 or 1).
+// A shader with one more define.
 gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file, const ClipMapFormat& format,
-                         const char* define, bool value) {
+                         const char* define, int value) {
   gpu::ShaderSource s = shader(shaders, file, format);
-  s.defines.emplace_back(define, value ? "1" : "0");
+  s.defines.emplace_back(define, std::to_string(value));
   return s;
+}
+
+// Binds, pushes and dispatches the workgroup count a list pass left in `arguments`
+// (brick_list.comp, downsample_list.comp): the air is never dispatched.
+template <class Push>
+void dispatchListed(const PassContext& ctx, const gpu::Pipeline& pipeline, const gpu::Bindings& bindings,
+                    BufferHandle arguments, const Push& push) {
+  ctx.bind(pipeline, bindings);
+  ctx.pushConstants(pipeline, push);
+  vkCmdDispatchIndirect(ctx.cmd(), ctx.buffer(arguments).handle(), 0);
 }
 
 // Bricks one resolve workgroup takes from the brick list (brick_list.comp): a power of
@@ -41,9 +51,7 @@ uint32_t bricksPerResolveGroup(uint32_t bricksPerLevel) {
 // coarsest clipped level → mip 0, 2 mip → mip (each mode reads and writes other layouts).
 gpu::ShaderSource downsampleShader(const std::filesystem::path& shaders, const ClipMapFormat& format,
                                    int mode) {
-  gpu::ShaderSource s = shader(shaders, "downsample.comp", format);
-  s.defines.emplace_back("VXGI_DOWNSAMPLE_MODE", std::to_string(mode));
-  return s;
+  return shader(shaders, "downsample.comp", format, "VXGI_DOWNSAMPLE_MODE", mode);
 }
 
 // The scratch volume of float sums: `channels` per voxel (4 per facing direction: rgb ×
@@ -364,7 +372,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       BufferHandle flags = handles.brickFlags, arguments = resolveArguments, list = brickList;
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(
-            shader(shaders, "brick_list.comp", format, "VXGI_WHOLE_LEVEL", wholeLevel));
+            shader(shaders, "brick_list.comp", format, "VXGI_WHOLE_LEVEL", wholeLevel ? 1 : 0));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants)
             .buffer("VxgiBrickOccupancy", occupied)
@@ -388,7 +396,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(
-            shader(shaders, "resolve.comp", format, "VXGI_RESOLVE_BRICK_LIST", wholeLevel));
+            shader(shaders, "resolve.comp", format, "VXGI_RESOLVE_BRICK_LIST", wholeLevel ? 1 : 0));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants).storage("scratch", sums);
         bindStorage(bind, "voxelsOut", h.clip);
@@ -397,9 +405,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           bind.buffer("VxgiBrickList", list);
           ResolvePush push{glm::ivec4(0, 0, 0, int32_t(level)), glm::ivec4(0), scratchPush, storageScale,
                            int32_t(bricksPerGroup)};
-          ctx.bind(pipeline, bind);
-          ctx.pushConstants(pipeline, push);
-          vkCmdDispatchIndirect(ctx.cmd(), ctx.buffer(arguments).handle(), 0);
+          dispatchListed(ctx, pipeline, bind, arguments, push);
           return;
         }
         for (const VoxelBox& box : boxes) {
@@ -465,9 +471,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         bindStorage(bind, "voxelsDst", h.clip);
         DownsamplePush push{glm::ivec4(inner.min, int32_t(level)),
                             glm::ivec4(innerSize, int32_t(bricksPerGroup))};
-        ctx.bind(pipeline, bind);
-        ctx.pushConstants(pipeline, push);
-        vkCmdDispatchIndirect(ctx.cmd(), ctx.buffer(arguments).handle(), 0);
+        dispatchListed(ctx, pipeline, bind, arguments, push);
       };
     });
   }

@@ -246,8 +246,6 @@ TEST_F(VxgiHardCases, CameraWalkScrollsToWhatAFreshStartVoxelizes) {
   for (int i = 0; i <= steps; ++i)
     walked = render(viewFrom(first + float(i) * step, 24, 24), {"indirect-irradiance"});
   const ImageBuffer incremental = walked.images.at("indirect-irradiance");
-  const ImageBuffer before =
-      render(viewFrom(first, 24, 24), {"indirect-irradiance"}).images.at("indirect-irradiance");
   finish();
   start("content/cornell_box.gltf", settings, "VXGI");
   const ImageBuffer fresh = render(viewFrom(first + float(steps) * step, 24, 24), {"indirect-irradiance"})
@@ -263,7 +261,7 @@ TEST_F(VxgiHardCases, CameraWalkScrollsToWhatAFreshStartVoxelizes) {
   std::printf("camera walk of %d steps: largest difference to a fresh start %.6f W/m² (largest value %.3f)\n",
               steps, worst, level);
   ASSERT_GT(level, 0.1);
-  EXPECT_TRUE(allFinite(before));
+  EXPECT_TRUE(allFinite(incremental));
   // Float atomics add in a different order: allow a rounding-level difference.
   EXPECT_LT(worst, 1e-3 * level);
 }
