@@ -292,6 +292,111 @@ VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
   return s;
 }
 
+#if !VXGI_AO_MODE
+// Sampling that sees only what a cone can: the surfaces a facing slot holds face against
+// r along the slot's axis a, so every ray of the cone that meets them travels the way r
+// does along a, and none of them lies behind the plane through the cone's apex across a
+// (a surface facing +a at height h is seen only from above h). A filter as wide as the
+// cone, centred on the cone's axis, reaches behind that plane (a few metres at the
+// coarsest levels): across a thin wall it read the wall's sunlit outer face and the roof
+// into the room (sunlit rooms 3–8× the path tracer's one bounce; the Cornell box's 5 cm
+// slabs stopped cones on their own back faces). So each slot is sampled on its own, with
+// its filter cut at the apex's plane (vxgiClipToApex).
+
+#if VXGI_DIRECTIONS == 6
+#define VXGI_MIP_SLOT(pos, neg, c, mip, w) mix(textureLod(pos, c, mip), textureLod(neg, c, mip), w)
+#else
+#define VXGI_MIP_SLOT(pos, neg, c, mip, w) textureLod(pos, c, mip)
+#endif
+// One facing slot (texture `clip` of the stack, `mipPos`/`mipNeg` of the pyramid) at
+// footprint d around p: the level matching d blended with the next coarser one, or the
+// coarsest level with the pyramid, as vxgiSample does for all three slots at once.
+// `used`: the footprint the value is per (wider than d where p lies outside the finer
+// levels). A macro because GLSL cannot pass samplers chosen at run time without a branch
+// per fetch (a CPU device runs every side of it).
+#define VXGI_DEFINE_SLOT(name, clip, mipPos, mipNeg, axis)                                   \
+  vec4 name(vec3 p, float d, vec3 r, out float used) {                                     \
+    used = max(d, clipMap.voxelSize0);                                                     \
+    float lod = log2(used / clipMap.voxelSize0);                                           \
+    int last = clipMap.levelCount - 1;                                                     \
+    int level = min(int(floor(lod)), last);                                                \
+    float blend = fract(lod);                                                              \
+    int inside = vxgiFinestLevelAt(p, level);                                              \
+    if (inside < 0) return vec4(0.0); /* outside the clip-map: nothing there */            \
+    if (inside > level) {                                                                  \
+      blend = 0.0;                                                                         \
+      used = vxgiVoxelSize(inside);                                                        \
+    }                                                                                      \
+    level = inside;                                                                        \
+    float positive = r[axis] > 0.0 ? 1.0 : 0.0;                                            \
+    vec3 signOffset = vec3(0.0, positive * vxgiSignOffset() * float(VXGI_SIGNS - 1), 0.0);  \
+    vxgiFetches += level < last ? 2u : 1u + uint(VXGI_SIGNS); /* the pyramid: both signs */ \
+    vec4 a = textureLod(clip, vxgiClipCoord(p, level) + signOffset, 0.0);                  \
+    if (level < last) return mix(a, textureLod(clip, vxgiClipCoord(p, level + 1) + signOffset, 0.0), blend); \
+    float mip = lod - float(last) - 1.0;                                                   \
+    vec4 b = VXGI_MIP_SLOT(mipPos, mipNeg, vxgiMipCoord(p), max(mip, 0.0), positive);      \
+    return mix(a, b, clamp(mip + 1.0, 0.0, 1.0));                                          \
+  }
+#if VXGI_DIRECTIONS == 6
+VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, voxelsMip0, voxelsMip3, 0)
+VXGI_DEFINE_SLOT(vxgiSlotY, voxelsClip1, voxelsMip1, voxelsMip4, 1)
+VXGI_DEFINE_SLOT(vxgiSlotZ, voxelsClip2, voxelsMip2, voxelsMip5, 2)
+#else
+VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, voxelsMip0, voxelsMip0, 0)
+VXGI_DEFINE_SLOT(vxgiSlotY, voxelsClip1, voxelsMip1, voxelsMip1, 1)
+VXGI_DEFINE_SLOT(vxgiSlotZ, voxelsClip2, voxelsMip2, voxelsMip2, 2)
+#endif
+
+// How far, in footprints, a sample's filter reaches behind its centre: the finer of the
+// two blended levels reads texels up to one of its voxels away, each holding what lies
+// half a voxel further (1.5 voxels, and its voxel is at most the footprint). The same
+// convention as the cone's surface clearance (trace_cone.glsl): the coarser level may
+// still reach up to 1.5 of its own voxels. Cutting at that too (3) shifted filters so far
+// forward that they missed the light in front of them (sunlit rooms 0.45–0.69 of the
+// path tracer, a thin wall leaked); 2 along the surface normal cut the window walls' own
+// leak further but lost the light of a 2 cm emitter (VXGI's README, "Sunlit rooms").
+const float VXGI_APEX_REACH = 1.5;
+
+// Where slot `axis` is sampled, and how wide (da): the filter of footprint d around p
+// spans VXGI_APEX_REACH·d each way along the axis; the part behind the apex's plane is
+// cut off and the filter narrows to what is left, keeping its front edge. A filter wholly
+// ahead of the plane is unchanged, and one centred on the plane keeps its front half.
+void vxgiClipToApex(vec3 p, float d, vec3 r, vec3 apex, int axis, out vec3 q, out float da) {
+  float s = r[axis] >= 0.0 ? 1.0 : -1.0;
+  float ahead = max(s * (p[axis] - apex[axis]), 0.0);  // p's distance in front of the plane
+  float h = VXGI_APEX_REACH * d;
+  float kept = min(0.5 * (ahead + h), h);  // half-width left, ≥ h / 2
+  q = p;
+  q[axis] = apex[axis] + s * (ahead + h - kept);
+  da = d * kept / h;
+}
+
+// vxgiSample for a cone whose apex is `apex`: each facing slot reads only what lies in
+// front of the apex's plane across its axis. Three slots at their own places and widths
+// take as many fetches as one shared sample (two levels each).
+VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, vec3 r, vec3 apex, out bool valid) {
+  VxgiSample s;
+  s.emittance = vec3(0.0);
+  s.density = 0.0;
+  // The footprint the caller steps by, as vxgiSample widens it where p lies outside the
+  // levels fine enough for it.
+  float lod = log2(max(diameter, clipMap.voxelSize0) / clipMap.voxelSize0);
+  int inside = vxgiFinestLevelAt(p, min(int(floor(lod)), clipMap.levelCount - 1));
+  valid = inside >= 0;
+  if (!valid) return s;
+  diameter = max(diameter, vxgiVoxelSize(inside));
+  vec3 qx, qy, qz;
+  float dx, dy, dz, ux, uy, uz;
+  vxgiClipToApex(p, diameter, r, apex, 0, qx, dx);
+  vxgiClipToApex(p, diameter, r, apex, 1, qy, dy);
+  vxgiClipToApex(p, diameter, r, apex, 2, qz, dz);
+  vec4 x = vxgiSlotX(qx, dx, r, ux), y = vxgiSlotY(qy, dy, r, uy), z = vxgiSlotZ(qz, dz, r, uz);
+  // A slot's density (and emittance, radiance × density) is per its own footprint; the
+  // caller counts optical depth per `diameter`. ux..uz ≥ the finest voxel: no division by 0.
+  return vxgiCombine(r, x * (diameter / ux), y * (diameter / uy), z * (diameter / uz));
+}
+#endif  // !VXGI_AO_MODE
+
 #endif  // VXGI_CLIP_MAP_TEXTURES
 
 #endif

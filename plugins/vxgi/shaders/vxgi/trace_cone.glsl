@@ -110,7 +110,12 @@ ConeTracingResults TraceCone(ConeTracingArguments args) {
     vec3 p = args.firstSamplePosition + r * t;
     bool valid;
     // The sample may widen `diameter` to the voxels of the finest level holding p.
+#if VXGI_AO_MODE
     VxgiSample s = vxgiSample(p, diameter, r, valid);
+#else
+    // Each facing direction reads only what lies in front of the apex (clip_map.glsl).
+    VxgiSample s = vxgiSampleAhead(p, diameter, r, args.firstSamplePosition, valid);
+#endif
     if (!valid) break;  // left the clip-map: nothing more to gather
     // Steps follow the cone's width even where the footprint is held narrower near the
     // surface, so that costs no extra samples; the optical depth below counts the whole
