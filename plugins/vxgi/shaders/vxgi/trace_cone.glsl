@@ -21,7 +21,8 @@
 struct ConeTracingArguments {
   vec3 direction;            // unit direction the cone marches along
   float coneFactor;          // cone diameter per metre of distance: 2·tan(half-angle)
-  vec3 firstSamplePosition;  // where marching starts (already offset from the surface)
+  vec3 firstSamplePosition;  // where marching starts (already offset from the surface): the
+                             // cone's apex, behind which no sample reads (clip_map.glsl)
   float firstSampleDistance; // distance the first sample is taken at, in finest voxels
   float maxDistance;         // metres; the cone stops there
   float stepFactor;          // step length as a fraction of the footprint (≤ 1)
