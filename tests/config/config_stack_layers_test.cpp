@@ -91,6 +91,20 @@ TEST(ConfigStackArrays, OperatorsAccumulateAcrossLayers) {
   EXPECT_EQ(stack.get("Paths", "Dirs"), std::nullopt);
 }
 
+TEST(ConfigStackArrays, EachElementKeepsTheFileAndLineThatAddedIt) {
+  ConfigStack stack;
+  stack.addText("[P]\nA=x\n", "base.ini", SetBy::BaseIni);
+  stack.addText("[P]\n+A=y\n.A=z\n+A=x\n", "default.ini", SetBy::DefaultIni);
+  stack.addText("[P]\n-A=y\n", "user.ini", SetBy::UserIni);
+  const ConfigStack::Value* v = stack.find("P", "A");
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->array, (Strings{"x", "z"}));
+  // `+A=x` found x already there: x keeps the line that first added it.
+  EXPECT_EQ(v->arraySources, (Strings{"base.ini:2", "default.ini:3"}));
+  stack.addText("[P]\n!A=\n", "user2.ini", SetBy::UserIni);
+  EXPECT_TRUE(stack.find("P", "A")->arraySources.empty());
+}
+
 TEST(ConfigStackArrays, RemoveTakesOutEveryEqualValue) {
   ConfigStack stack;
   stack.addText("[P]\n.A=x\n.A=y\n.A=x\n", "base.ini", SetBy::BaseIni);

@@ -74,8 +74,7 @@ TEST_F(PluginSearchPathTest, CommandLineThenEnvironmentThenIniThenDefaults) {
                  env2 = folder("env2"), ini = folder("ini"), def = folder("default");
   PluginSearchPathSources s{.commandLine = {flag1, flag2},
                             .environment = env1.string() + ":" + env2.string(),
-                            .ini = ini.string(),
-                            .iniSource = (base_ / "config/DefaultEngine.ini").string() + ":3",
+                            .ini = {{ini.string(), (base_ / "config/DefaultEngine.ini").string() + ":3"}},
                             .defaults = {def}};
   const std::vector<PluginSearchFolder> found = resolvePluginSearchPath(s);
   EXPECT_EQ(paths(found), (std::vector<fs::path>{flag1, flag2, env1, env2, ini, def}));
@@ -91,8 +90,7 @@ TEST_F(PluginSearchPathTest, AMissingFolderIsOneWarningNamingItAndWhereItCameFro
   log::Capture capture;
   PluginSearchPathSources s{.commandLine = {base_ / "no-flag-dir"},
                             .environment = (base_ / "no-env-dir").string() + ":" + there.string(),
-                            .ini = "no-ini-dir",
-                            .iniSource = (base_ / "config/User.ini").string() + ":7",
+                            .ini = {{"no-ini-dir", (base_ / "config/User.ini").string() + ":7"}},
                             .defaults = {base_ / "no-default-dir"}};
   EXPECT_EQ(paths(resolvePluginSearchPath(s)), (std::vector<fs::path>{there}));
   EXPECT_EQ(capture.count(log::Level::Warning), 3u) << capture.joined();
@@ -108,8 +106,7 @@ TEST_F(PluginSearchPathTest, AMissingFolderIsOneWarningNamingItAndWhereItCameFro
 
 TEST_F(PluginSearchPathTest, RelativeIniEntriesAreRelativeToTheIniFile) {
   const fs::path mine = folder("config/my-plugins");
-  PluginSearchPathSources s{.ini = "my-plugins",
-                            .iniSource = (base_ / "config/DefaultEngine.ini").string() + ":2"};
+  PluginSearchPathSources s{.ini = {{"my-plugins", (base_ / "config/DefaultEngine.ini").string() + ":2"}}};
   EXPECT_EQ(paths(resolvePluginSearchPath(s)), (std::vector<fs::path>{mine}));
 }
 
@@ -148,6 +145,26 @@ TEST_F(PluginSearchPathTest, TheEngineSearchesFlagEnvironmentAndIniAndTheFirstNa
       << capture.joined();
   // SearchPaths is where to look, not a plugin switch.
   EXPECT_FALSE(capture.contains("is not True or False")) << capture.joined();
+  EXPECT_TRUE(engine.commandLineErrors().empty());
+}
+
+TEST_F(PluginSearchPathTest, IniLayersAppendSearchPathsAsUnrealArraysEachRelativeToItsOwnFile) {
+  // Unreal's array operators: `+SearchPaths=` in a later layer adds to the earlier
+  // layer's folders instead of being ignored (it was: only a plain `SearchPaths=` counted),
+  // and each relative entry resolves against the folder of the ini file that wrote it.
+  descriptor(folder("config/base-plugins"), "FromBase");
+  descriptor(folder("config/project-plugins"), "FromProject");
+  descriptor(folder("elsewhere/extra-plugins"), "FromExtra");
+  write(base_ / "config/BaseEngine.ini", "[Plugins]\nSearchPaths=base-plugins\n");
+  write(base_ / "config/DefaultEngine.ini", "[Plugins]\n+SearchPaths=project-plugins\n");
+  write(base_ / "elsewhere/Extra.ini", "[Plugins]\n+SearchPaths=extra-plugins\n");
+  EngineOptions o = options({});
+  o.iniFiles = {(base_ / "elsewhere/Extra.ini").string()};
+  Engine engine(o);
+  ASSERT_NE(engine.plugins().descriptor("FromBase"), nullptr);
+  ASSERT_NE(engine.plugins().descriptor("FromProject"), nullptr);
+  ASSERT_NE(engine.plugins().descriptor("FromExtra"), nullptr);
+  EXPECT_EQ(engine.plugins().descriptor("FromExtra")->folder(), base_ / "elsewhere/extra-plugins/FromExtra");
   EXPECT_TRUE(engine.commandLineErrors().empty());
 }
 

@@ -117,10 +117,8 @@ Engine::Engine(EngineOptions options) {
   PluginSearchPathSources search{.commandLine = options.pluginDirs};
   if (options.defaultPluginDirs) {
     if (const char* env = std::getenv("BOUNCE_PLUGIN_PATH")) search.environment = env;
-    if (const ConfigStack::Value* v = config_.find("Plugins", kSearchPathsKey)) {
-      search.ini = v->text;
-      search.iniSource = v->source;
-    }
+    if (const ConfigStack::Value* v = config_.find("Plugins", kSearchPathsKey))
+      for (size_t i = 0; i < v->array.size(); ++i) search.ini.push_back({v->array[i], v->arraySources[i]});
     const fs::path prefix = executableDirectory().parent_path();
     search.defaults = {prefix / "plugins", prefix / "lib" / "bounce" / "plugins"};
   }

@@ -84,31 +84,43 @@ void ConfigStack::merge(const IniDocument& doc, SetBy level) {
     // the user's ini: a lower layer never overrides what a higher one wrote.
     if (!inserted && level < v.level) continue;
     std::vector<std::string>& items = v.array;
+    std::vector<std::string>& sources = v.arraySources;
+    const std::string source = fmt::format("{}:{}", doc.path(), entry.line);
     switch (entry.op) {
       case IniEntry::Op::Set:
         // As in Unreal, a plain assignment replaces the whole array too.
         v.text = entry.value;
         v.assigned = true;
         items.assign(1, entry.value);
+        sources.assign(1, source);
         break;
       case IniEntry::Op::Append:
-        if (std::find(items.begin(), items.end(), entry.value) == items.end()) items.push_back(entry.value);
+        if (std::find(items.begin(), items.end(), entry.value) == items.end()) {
+          items.push_back(entry.value);
+          sources.push_back(source);
+        }
         break;
       case IniEntry::Op::AppendDuplicate:
         items.push_back(entry.value);
+        sources.push_back(source);
         break;
       case IniEntry::Op::Remove:
-        std::erase(items, entry.value);
+        for (size_t i = items.size(); i-- > 0;)
+          if (items[i] == entry.value) {
+            items.erase(items.begin() + std::ptrdiff_t(i));
+            sources.erase(sources.begin() + std::ptrdiff_t(i));
+          }
         break;
       case IniEntry::Op::Clear:
         // `!Key=` removes the key: a higher layer can take back a lower layer's value.
         items.clear();
+        sources.clear();
         v.text.clear();
         v.assigned = false;
         break;
     }
     v.level = level;
-    v.source = fmt::format("{}:{}", doc.path(), entry.line);
+    v.source = source;
     v.sequence = ++writes_;
   }
 }

@@ -40,12 +40,13 @@ std::vector<PluginSearchFolder> resolvePluginSearchPath(const PluginSearchPathSo
 
   for (const fs::path& dir : sources.commandLine) add(dir, "--plugin-dir", true);
   for (const std::string& dir : splitSearchPath(sources.environment)) add(dir, "BOUNCE_PLUGIN_PATH", true);
-  // "file:line" → the ini file's folder, against which relative entries resolve.
-  const fs::path iniFolder =
-      fs::path(sources.iniSource.substr(0, sources.iniSource.rfind(':'))).parent_path();
-  for (const std::string& dir : splitSearchPath(sources.ini)) {
-    const fs::path p(dir);
-    add(p.is_absolute() ? p : iniFolder / p, sources.iniSource + ": [Plugins] SearchPaths", true);
+  for (const PluginSearchPathSources::IniValue& value : sources.ini) {
+    // "file:line" → the ini file's folder, against which relative entries resolve.
+    const fs::path iniFolder = fs::path(value.source.substr(0, value.source.rfind(':'))).parent_path();
+    for (const std::string& dir : splitSearchPath(value.list)) {
+      const fs::path p(dir);
+      add(p.is_absolute() ? p : iniFolder / p, value.source + ": [Plugins] SearchPaths", true);
+    }
   }
   for (const fs::path& dir : sources.defaults) add(dir, "default", false);
   return out;

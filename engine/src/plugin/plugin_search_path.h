@@ -23,9 +23,14 @@ namespace bounce {
 struct PluginSearchPathSources {
   std::vector<std::filesystem::path> commandLine;  ///< --plugin-dir, in order
   std::string environment;                         ///< the value of $BOUNCE_PLUGIN_PATH
-  std::string ini;                                 ///< the value of [Plugins] SearchPaths
-  std::string iniSource;                           ///< "file:line" of that value
-  std::vector<std::filesystem::path> defaults;     ///< beside the executable
+  /// [Plugins] SearchPaths: each value (`SearchPaths=`, `+SearchPaths=`, … in any ini
+  /// layer) with the "file:line" that wrote it, against whose folder relative entries resolve.
+  struct IniValue {
+    std::string list;
+    std::string source;
+  };
+  std::vector<IniValue> ini;
+  std::vector<std::filesystem::path> defaults;  ///< beside the executable
 };
 
 struct PluginSearchFolder {

@@ -29,12 +29,13 @@ class ConfigStack {
   const std::vector<IniDiagnostic>& diagnostics() const { return diagnostics_; }
 
   struct Value {
-    std::string text;                ///< scalar value (the last assignment)
-    std::vector<std::string> array;  ///< the array after every +/-/./! across layers
-    SetBy level = SetBy::BaseIni;    ///< layer of the last write
-    std::string source;              ///< "file:line" of the last write
-    bool assigned = false;           ///< a plain `Key=Value` set `text` (array-only keys have none)
-    uint64_t sequence = 0;           ///< load order of the last write (same-priority writes apply in order)
+    std::string text;                       ///< scalar value (the last assignment)
+    std::vector<std::string> array;         ///< the array after every +/-/./! across layers
+    std::vector<std::string> arraySources;  ///< "file:line" of each element of `array`
+    SetBy level = SetBy::BaseIni;           ///< layer of the last write
+    std::string source;                     ///< "file:line" of the last write
+    bool assigned = false;                  ///< a plain `Key=Value` set `text` (array-only keys have none)
+    uint64_t sequence = 0;  ///< load order of the last write (same-priority writes apply in order)
   };
   const Value* find(std::string_view section, std::string_view key) const;
   std::optional<std::string> get(std::string_view section, std::string_view key) const;
