@@ -92,6 +92,81 @@ TEST_F(PluginApi, ReadbackOfAResourceNotDeclaredAsTransferSourceFailsOnlyThatPas
   engine->hooks().removeOwnedBy(kEngineOwner);
 }
 
+// An earlier pass writes the workgroup counts; the indirect dispatch runs exactly those
+// groups: fill.comp (4×4 invocations per group) over an 8×4 grid with one group in x
+// writes the left half only.
+TEST_F(PluginApi, IndirectDispatchRunsTheGroupsAnEarlierPassWrote) {
+  start("content/tests/emissive_quad.gltf");
+  struct Push {
+    uint32_t width, height;
+    float scale;
+  };
+  std::vector<uint32_t> values;
+  std::vector<std::string> errors;
+  auto run = [&](uint32_t groupsX, uint64_t argumentBytes, uint64_t offset) {
+    values.clear();
+    addHook([&, groupsX, argumentBytes, offset](RenderGraph& g, const FrameContext&) {
+      BufferHandle args, out, written;
+      TextureHandle target;
+      g.addPass("Test.Arguments", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+        args = b.write(b.createBuffer("test.args", {argumentBytes}), Access::TransferDst);
+        out = b.write(b.createBuffer("test.values", {32 * 4}), Access::TransferDst);
+        return [=](PassContext& ctx) {
+          std::vector<uint32_t> command(argumentBytes / 4, 0);
+          const size_t at = offset / 4;
+          if (at + 2 < command.size()) {
+            command[at] = groupsX;  // VkDispatchIndirectCommand {x, y, z}
+            command[at + 1] = 1;
+            command[at + 2] = 1;
+          }
+          ctx.upload(args, command.data(), argumentBytes);
+          const std::vector<uint32_t> zeros(32, 0);
+          ctx.upload(out, zeros.data(), zeros.size() * 4);
+        };
+      });
+      g.addPass("Test.Indirect", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+        BufferHandle a = b.read(args, Access::Indirect);
+        BufferHandle v = written = b.write(out, Access::StorageWrite);
+        target = b.write(b.createTexture("test.target",
+                                         {.format = VK_FORMAT_R32G32B32A32_SFLOAT, .width = 8, .height = 4}),
+                         Access::StorageWrite);
+        return [=, this](PassContext& ctx) {
+          const gpu::Pipeline& p = ctx.pipelines().compute({"tests/render/shaders/fill.comp", {}});
+          ctx.dispatchIndirect(p, gpu::Bindings().storage("target", target).buffer("Values", v), a,
+                               Push{8, 4, 1.0f}, offset);
+        };
+      });
+      g.addPass("Test.Readback", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+        BufferHandle v = b.read(written, Access::TransferSrc);
+        b.sideEffect("reads back test data");
+        return [=, &values](PassContext& ctx) {
+          ctx.readback(v, [&](std::span<const std::byte> bytes) { values = as<uint32_t>(bytes); });
+        };
+      });
+    });
+    RenderedFrame f = renderer->render(view(8, 8), {}, 0);
+    errors = f.gpu.errors;
+    engine->hooks().removeOwnedBy(kEngineOwner);
+  };
+
+  run(1, 12, 0);
+  ASSERT_TRUE(errors.empty()) << errors.front();
+  ASSERT_EQ(values.size(), 32u);
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 8; ++x) EXPECT_EQ(values[y * 8 + x], x < 4 ? y * 1000 + x : 0u) << x << "," << y;
+
+  run(2, 32, 16);  // the command at an offset: both groups run
+  ASSERT_TRUE(errors.empty()) << errors.front();
+  for (uint32_t y = 0; y < 4; ++y)
+    for (uint32_t x = 0; x < 8; ++x) EXPECT_EQ(values[y * 8 + x], y * 1000 + x) << x << "," << y;
+
+  run(1, 16, 8);  // 12 bytes at 8 overrun 16: the pass fails with a message, nothing runs
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("Test.Indirect"), std::string::npos) << errors[0];
+  EXPECT_NE(errors[0].find("indirect dispatch at offset 8 of a 16-byte argument buffer"), std::string::npos)
+      << errors[0];
+}
+
 TEST_F(PluginApi, FallbacksBindInPlaceOfAbsentResourcesWithTheDeclaredViewType) {
   start("content/tests/emissive_quad.gltf");
   std::vector<float> result;

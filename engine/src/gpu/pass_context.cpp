@@ -1,5 +1,7 @@
 #include "bounce/gpu/pass_context.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -91,6 +93,22 @@ void PassContext::dispatchThreads(const gpu::Pipeline& pipeline, const gpu::Bind
   const auto local = pipeline.localSize();
   auto groups = [](uint32_t n, uint32_t l) { return (n + l - 1) / std::max(1u, l); };
   vkCmdDispatch(cmd(), groups(threads.x, local[0]), groups(threads.y, local[1]), groups(threads.z, local[2]));
+}
+
+void PassContext::dispatchIndirect(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings,
+                                   BufferHandle arguments, const void* push, uint32_t pushBytes,
+                                   uint64_t offset) const {
+  const gpu::Buffer& args = buffer(arguments);
+  constexpr uint64_t kCommandBytes = sizeof(VkDispatchIndirectCommand);
+  // Vulkan's rules for the offset (VUID-vkCmdDispatchIndirect-offset-02710 and -00407).
+  if (offset % 4 != 0 || offset > args.size() || args.size() - offset < kCommandBytes)
+    throw std::logic_error(
+        fmt::format("indirect dispatch at offset {} of a {}-byte argument buffer (needs {} "
+                    "bytes at a multiple of 4)",
+                    offset, args.size(), kCommandBytes));
+  bind(pipeline, bindings);
+  pushConstants(pipeline, push, pushBytes);
+  vkCmdDispatchIndirect(cmd(), args.handle(), offset);
 }
 
 void PassContext::beginRendering(const RenderingInfo& info) const {

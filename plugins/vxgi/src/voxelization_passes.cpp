@@ -28,16 +28,6 @@ gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file,
   return s;
 }
 
-// Binds, pushes and dispatches the workgroup count a list pass left in `arguments`
-// (brick_list.comp, downsample_list.comp): the air is never dispatched.
-template <class Push>
-void dispatchListed(const PassContext& ctx, const gpu::Pipeline& pipeline, const gpu::Bindings& bindings,
-                    BufferHandle arguments, const Push& push) {
-  ctx.bind(pipeline, bindings);
-  ctx.pushConstants(pipeline, push);
-  vkCmdDispatchIndirect(ctx.cmd(), ctx.buffer(arguments).handle(), 0);
-}
-
 // Bricks one resolve workgroup takes from the brick list (brick_list.comp): a power of
 // two that keeps the indirect dispatch within 65535 workgroups, the least every device
 // allows (a 256³ level has 262144 bricks).
@@ -405,7 +395,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           bind.buffer("VxgiBrickList", list);
           ResolvePush push{glm::ivec4(0, 0, 0, int32_t(level)), glm::ivec4(0), scratchPush, storageScale,
                            int32_t(bricksPerGroup)};
-          dispatchListed(ctx, pipeline, bind, arguments, push);
+          ctx.dispatchIndirect(pipeline, bind, arguments, push);
           return;
         }
         for (const VoxelBox& box : boxes) {
@@ -471,7 +461,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         bindStorage(bind, "voxelsDst", h.clip);
         DownsamplePush push{glm::ivec4(inner.min, int32_t(level)),
                             glm::ivec4(innerSize, int32_t(bricksPerGroup))};
-        dispatchListed(ctx, pipeline, bind, arguments, push);
+        ctx.dispatchIndirect(pipeline, bind, arguments, push);
       };
     });
   }

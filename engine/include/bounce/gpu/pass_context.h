@@ -99,6 +99,19 @@ class PassContext {
                        const T& push) const {
     dispatchThreads(pipeline, bindings, threads, &push, uint32_t(sizeof(T)));
   }
+  /// bind + push constants + vkCmdDispatchIndirect: the workgroup counts are the
+  /// VkDispatchIndirectCommand at `offset` of `arguments`, which an earlier pass wrote and
+  /// this one declared with Access::Indirect. How to skip work on a CPU device: list what
+  /// needs doing in a small pass, then dispatch over the list (docs/writing-a-plugin.md).
+  /// An offset that is not a multiple of 4, or a command past the buffer's end, throws
+  /// std::logic_error (the pass fails, the frame goes on).
+  void dispatchIndirect(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings, BufferHandle arguments,
+                        const void* push = nullptr, uint32_t pushBytes = 0, uint64_t offset = 0) const;
+  template <class T>
+  void dispatchIndirect(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings, BufferHandle arguments,
+                        const T& push, uint64_t offset = 0) const {
+    dispatchIndirect(pipeline, bindings, arguments, &push, uint32_t(sizeof(T)), offset);
+  }
 
   /// Dynamic rendering into graph textures; sets a full-target viewport and scissor.
   void beginRendering(const RenderingInfo& info) const;
