@@ -119,8 +119,8 @@ TEST_F(VxgiSunlitRoom, SunlitOuterFacesDoNotFloodTheRoom) {
   // reached behind the cones' apexes into the roof's and the outer faces' emittance. Now
   // that each facing direction reads only what lies in front of the apex (clip_map.glsl,
   // vxgiSampleAhead): window wall 1.14 / 1.12 / 1.04, view 1.21 / 1.21 / 1.08, the
-  // brightest wall 1.97 / 2.15 / 1.44 (the right one: these walls lie exactly on voxel
-  // boundaries, and the left ones read 1.08 / 1.11 / 0.66).
+  // brightest wall 1.97 / 2.15 / 1.44 (the right one; the left ones read 1.08 / 1.11 / 0.66:
+  // the 8 cones are not mirror images on the two walls; with 32 they agree, 0.91–1.22).
   // Bounds: the measured values plus about 25% (the reference's noise is ~2%): window wall
   // below 1.4, view below 1.5, every wall below 2.6; each fails the code before.
   //
