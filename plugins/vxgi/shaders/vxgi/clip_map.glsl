@@ -354,7 +354,7 @@ VXGI_DEFINE_SLOT(vxgiSlotZ, voxelsClip2, voxelsMip2, voxelsMip2, 2)
 // still reach up to 1.5 of its own voxels. Cutting at that too (3) shifted filters so far
 // forward that they missed the light in front of them (sunlit rooms 0.45–0.69 of the
 // path tracer, a thin wall leaked); 2 along the surface normal cut the window walls' own
-// leak further but lost the light of a 2 cm emitter (VXGI's README, "Sunlit rooms").
+// leak further but lost the light of a 2 cm emitter (VXGI's README, "Known gaps").
 const float VXGI_APEX_REACH = 1.5;
 
 // Where slot `axis` is sampled, and how wide (da): the filter of footprint d around p
