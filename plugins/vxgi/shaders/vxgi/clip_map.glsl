@@ -179,12 +179,46 @@ VxgiSample vxgiCombine(vec3 r, vec4 x, vec4 y, vec4 z) {
   return s;
 }
 
-// The three facing directions against r, one fetch each at coordinate c (a level of
-// the stack, or the pyramid at `mip`). No branch chooses a texture: a CPU device runs
-// both sides of a branch that neighbouring invocations might take differently, which
-// doubled every fetch. In the stack the sign is a coordinate (Y offset); in the pyramid
-// both signs are fetched and blended by a 0/1 weight.
+// Filtered fetches taken by this invocation (work reports, bounce/work_counters.glsl).
+uint vxgiFetches = 0u;
+
+// Which levels a footprint of diameter d at p reads: the level whose voxels match it,
+// blended with the next coarser one (quadrilinear), or beyond the clipped levels the
+// coarsest level blended with the mip pyramid, whose mip m has voxels 2^(m+1) times the
+// coarsest level's. Where p lies outside the levels fine enough for d, the finest level
+// holding p alone, and the footprint grows to its voxel: the footprint the sample's
+// density is per (a caller stepping by the smaller one would count the same coarse
+// voxel's optical depth several times over). False outside the clip-map.
+struct VxgiLevels {
+  int level;    // the finer of the two blended levels
+  float blend;  // weight of the coarser one: level + 1, or the pyramid at `mip`
+  float mip;    // pyramid mip (fractional: the hardware blends mips), when level is the coarsest
+  float used;   // footprint the blended value is per
+};
+bool vxgiChooseLevels(vec3 p, float d, out VxgiLevels c) {
+  c.used = max(d, clipMap.voxelSize0);
+  float lod = log2(c.used / clipMap.voxelSize0);
+  int last = clipMap.levelCount - 1;
+  int level = min(int(floor(lod)), last);
+  float blend = fract(lod);
+  c.level = vxgiFinestLevelAt(p, level);
+  if (c.level < 0) return false;
+  if (c.level > level) {  // p is past the finer level's edge: the coarser alone
+    blend = 0.0;
+    c.used = vxgiVoxelSize(c.level);
+  }
+  float mip = lod - float(last) - 1.0;
+  c.mip = max(mip, 0.0);
+  c.blend = c.level < last ? blend : clamp(mip + 1.0, 0.0, 1.0);
+  return true;
+}
+
 #if VXGI_AO_MODE
+// Ambient-occlusion mode: each texel packs three facing directions' densities, so one
+// fetch serves all three axes at coordinate c (a level of the stack, or the pyramid at
+// `mip`); the facing is chosen per axis by value, not by a branch between textures (a
+// CPU device runs both sides of a branch that neighbouring invocations might take
+// differently).
 #if VXGI_DIRECTIONS == 6
 #define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
   {                                                                                        \
@@ -198,99 +232,39 @@ VxgiSample vxgiCombine(vec3 r, vec4 x, vec4 y, vec4 z) {
     s = vxgiCombine(r, vec4(0.0, 0.0, 0.0, d_.x), vec4(0.0, 0.0, 0.0, d_.y), vec4(0.0, 0.0, 0.0, d_.z)); \
   }
 #endif
-#elif VXGI_DIRECTIONS == 6
-// Facing −r: travelling along +X, the surfaces facing −X (sign 1) stop the cone.
-#define VXGI_FETCH_FACING_CLIP(c, r, s)                                                    \
-  {                                                                                        \
-    vec3 sign_ = vec3(greaterThan(r, vec3(0.0))) * vxgiSignOffset();                       \
-    s = vxgiCombine(r, textureLod(voxelsClip0, c + vec3(0.0, sign_.x, 0.0), 0.0),          \
-                    textureLod(voxelsClip1, c + vec3(0.0, sign_.y, 0.0), 0.0),             \
-                    textureLod(voxelsClip2, c + vec3(0.0, sign_.z, 0.0), 0.0));            \
-  }
-#define VXGI_FETCH_FACING_MIP(c, mip, r, s)                                                \
-  {                                                                                        \
-    vec3 w_ = vec3(greaterThan(r, vec3(0.0)));                                             \
-    s = vxgiCombine(r, mix(textureLod(voxelsMip0, c, mip), textureLod(voxelsMip3, c, mip), w_.x), \
-                    mix(textureLod(voxelsMip1, c, mip), textureLod(voxelsMip4, c, mip), w_.y),   \
-                    mix(textureLod(voxelsMip2, c, mip), textureLod(voxelsMip5, c, mip), w_.z));  \
-  }
-#else
-#define VXGI_FETCH_FACING(suffix, c, mip, r, s)                                            \
-  s = vxgiCombine(r, textureLod(voxels##suffix##0, c, mip), textureLod(voxels##suffix##1, c, mip), \
-                  textureLod(voxels##suffix##2, c, mip));
-#endif
-
-// Filtered fetches taken by this invocation (work reports, bounce/work_counters.glsl):
-// what one vxgiSampleClip or vxgiSampleMip reads.
-uint vxgiFetches = 0u;
-#if VXGI_AO_MODE
 const uint VXGI_FETCHES_PER_SAMPLE = uint(VXGI_DIRECTIONS / 3);
-#else
-const uint VXGI_FETCHES_PER_SAMPLE = 3u;
-#endif
-
-#ifndef VXGI_FETCH_FACING_CLIP
-#define VXGI_FETCH_FACING_CLIP(c, r, s) VXGI_FETCH_FACING(Clip, c, 0.0, r, s)
-#define VXGI_FETCH_FACING_MIP(c, mip, r, s) VXGI_FETCH_FACING(Mip, c, mip, r, s)
-#endif
 
 VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
   vxgiFetches += VXGI_FETCHES_PER_SAMPLE;
-  vec3 c = vxgiClipCoord(p, level);
   VxgiSample s;
-  VXGI_FETCH_FACING_CLIP(c, r, s)
+  VXGI_FETCH_FACING(Clip, vxgiClipCoord(p, level), 0.0, r, s)
   return s;
 }
 
 VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
-  vxgiFetches += VXGI_SIGNS * VXGI_FETCHES_PER_SAMPLE;  // both signs in the pyramid
-  vec3 c = vxgiMipCoord(p);
+  vxgiFetches += VXGI_FETCHES_PER_SAMPLE;
   VxgiSample s;
-  VXGI_FETCH_FACING_MIP(c, mip, r, s)
+  VXGI_FETCH_FACING(Mip, vxgiMipCoord(p), mip, r, s)
   return s;
 }
 
-// A filtered sample for a cone footprint of diameter `diameter` at p: the level whose
-// voxels match the footprint, blended with the next coarser one (quadrilinear), then
-// the mip pyramid beyond the coarsest level. `valid` is false outside the clip-map.
-// Where p lies outside the levels fine enough for `diameter`, the sample comes from the
-// finest level holding p and `diameter` grows to that level's voxel: the footprint the
-// sample's density is per (a caller stepping by the smaller one would count the same
-// coarse voxel's optical depth several times over).
+// A filtered sample for a cone footprint of diameter `diameter` at p (vxgiChooseLevels,
+// which may widen `diameter`). `valid` is false outside the clip-map.
 VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
-  float lod = log2(max(diameter, clipMap.voxelSize0) / clipMap.voxelSize0);
-  int last = clipMap.levelCount - 1;
-  int level = min(int(floor(lod)), last);
-  float blend = fract(lod);
   VxgiSample s;
   s.emittance = vec3(0.0);
   s.density = 0.0;
-  int inside = vxgiFinestLevelAt(p, level);
-  valid = inside >= 0;
-  if (!valid) return s;  // outside the clip-map
-  if (inside > level) {  // p is past the finer level's edge: use the coarser alone
-    blend = 0.0;
-    diameter = vxgiVoxelSize(inside);
-  }
-  level = inside;
-  // Two samples, blended: the level and the next coarser one (a coarser level holds every
-  // point of a finer one), or beyond the clipped levels the coarsest level and the mip
-  // pyramid, whose mip m has voxels 2^(m+1) times the coarsest level's.
-  VxgiSample a = vxgiSampleClip(p, level, r);
-  VxgiSample b;
-  float t;
-  if (level < last) {
-    b = vxgiSampleClip(p, level + 1, r);
-    t = blend;
-  } else {
-    float mip = lod - float(last) - 1.0;
-    b = vxgiSampleMip(p, max(mip, 0.0), r);
-    t = clamp(mip + 1.0, 0.0, 1.0);
-  }
-  s.emittance = mix(a.emittance, b.emittance, t);
-  s.density = mix(a.density, b.density, t);
+  VxgiLevels c;
+  valid = vxgiChooseLevels(p, diameter, c);
+  if (!valid) return s;
+  diameter = c.used;
+  VxgiSample a = vxgiSampleClip(p, c.level, r);
+  VxgiSample b = c.level < clipMap.levelCount - 1 ? vxgiSampleClip(p, c.level + 1, r) : vxgiSampleMip(p, c.mip, r);
+  s.emittance = mix(a.emittance, b.emittance, c.blend);
+  s.density = mix(a.density, b.density, c.blend);
   return s;
 }
+#endif  // VXGI_AO_MODE
 
 #if !VXGI_AO_MODE
 // Sampling that sees only what a cone can: the surfaces a facing slot holds face against
@@ -309,33 +283,23 @@ VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
 #define VXGI_MIP_SLOT(pos, neg, c, mip, w) textureLod(pos, c, mip)
 #endif
 // One facing slot (texture `clip` of the stack, `mipPos`/`mipNeg` of the pyramid) at
-// footprint d around p: the level matching d blended with the next coarser one, or the
-// coarsest level with the pyramid, as vxgiSample does for all three slots at once.
+// footprint d around p, from the levels vxgiChooseLevels picks.
 // `used`: the footprint the value is per (wider than d where p lies outside the finer
 // levels). A macro because GLSL cannot pass samplers chosen at run time without a branch
 // per fetch (a CPU device runs every side of it).
 #define VXGI_DEFINE_SLOT(name, clip, mipPos, mipNeg, axis)                                   \
   vec4 name(vec3 p, float d, vec3 r, out float used) {                                     \
+    VxgiLevels c;                                                                          \
     used = max(d, clipMap.voxelSize0);                                                     \
-    float lod = log2(used / clipMap.voxelSize0);                                           \
-    int last = clipMap.levelCount - 1;                                                     \
-    int level = min(int(floor(lod)), last);                                                \
-    float blend = fract(lod);                                                              \
-    int inside = vxgiFinestLevelAt(p, level);                                              \
-    if (inside < 0) return vec4(0.0); /* outside the clip-map: nothing there */            \
-    if (inside > level) {                                                                  \
-      blend = 0.0;                                                                         \
-      used = vxgiVoxelSize(inside);                                                        \
-    }                                                                                      \
-    level = inside;                                                                        \
+    if (!vxgiChooseLevels(p, d, c)) return vec4(0.0); /* outside the clip-map */           \
+    used = c.used;                                                                         \
     float positive = r[axis] > 0.0 ? 1.0 : 0.0;                                            \
     vec3 signOffset = vec3(0.0, positive * vxgiSignOffset() * float(VXGI_SIGNS - 1), 0.0);  \
-    vxgiFetches += level < last ? 2u : 1u + uint(VXGI_SIGNS); /* the pyramid: both signs */ \
-    vec4 a = textureLod(clip, vxgiClipCoord(p, level) + signOffset, 0.0);                  \
-    if (level < last) return mix(a, textureLod(clip, vxgiClipCoord(p, level + 1) + signOffset, 0.0), blend); \
-    float mip = lod - float(last) - 1.0;                                                   \
-    vec4 b = VXGI_MIP_SLOT(mipPos, mipNeg, vxgiMipCoord(p), max(mip, 0.0), positive);      \
-    return mix(a, b, clamp(mip + 1.0, 0.0, 1.0));                                          \
+    bool pyramid = c.level == clipMap.levelCount - 1;                                      \
+    vxgiFetches += pyramid ? 1u + uint(VXGI_SIGNS) : 2u; /* the pyramid: both signs */     \
+    vec4 a = textureLod(clip, vxgiClipCoord(p, c.level) + signOffset, 0.0);                \
+    if (!pyramid) return mix(a, textureLod(clip, vxgiClipCoord(p, c.level + 1) + signOffset, 0.0), c.blend); \
+    return mix(a, VXGI_MIP_SLOT(mipPos, mipNeg, vxgiMipCoord(p), c.mip, positive), c.blend); \
   }
 #if VXGI_DIRECTIONS == 6
 VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, voxelsMip0, voxelsMip3, 0)
@@ -378,13 +342,12 @@ VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, vec3 r, vec3 apex, out 
   VxgiSample s;
   s.emittance = vec3(0.0);
   s.density = 0.0;
-  // The footprint the caller steps by, as vxgiSample widens it where p lies outside the
-  // levels fine enough for it.
-  float lod = log2(max(diameter, clipMap.voxelSize0) / clipMap.voxelSize0);
-  int inside = vxgiFinestLevelAt(p, min(int(floor(lod)), clipMap.levelCount - 1));
-  valid = inside >= 0;
+  // The footprint the caller steps by, widened where p lies outside the levels fine
+  // enough for it.
+  VxgiLevels c;
+  valid = vxgiChooseLevels(p, diameter, c);
   if (!valid) return s;
-  diameter = max(diameter, vxgiVoxelSize(inside));
+  diameter = c.used;
   vec3 qx, qy, qz;
   float dx, dy, dz, ux, uy, uz;
   vxgiClipToApex(p, diameter, r, apex, 0, qx, dx);

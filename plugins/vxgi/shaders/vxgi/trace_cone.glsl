@@ -72,7 +72,7 @@ const int VXGI_MAX_STEPS = 512;
 const float VXGI_SURFACE_CLEARANCE = 1.5;
 // Edge of the voxels a sample reads, per metre of cone diameter. A trilinear sample of
 // voxels of edge V spreads what it reads over a tent of half-width V (variance V²/6 per
-// axis) and each voxel's content over the voxel (V²/12): variance V²/4. vxgiSample blends
+// axis) and each voxel's content over the voxel (V²/12): variance V²/4. vxgiChooseLevels blends
 // the level of voxel V = d·2^−f with the next, 2V, by f = fract(log2(d / v0)): variance
 // d²·2^−2f·(1 + 3f)/4, whose mean over f (a cone widens through every f) is 0.293 d². The
 // cone's cross-section, a disk of diameter D, has variance D²/16 along each axis in its
