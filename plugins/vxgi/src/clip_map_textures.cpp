@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace bounce::vxgi {
 
 namespace {
@@ -32,6 +34,25 @@ VkFormat voxelFormat(const ClipMapFormat& f) {
 
 }  // namespace
 
+ScratchLayout ScratchLayout::of(const ClipMapFormat& f) {
+  ScratchLayout s;
+  s.channels = f.directionCount() * (f.ambientOcclusionMode ? 1u : 4u);
+  const uint32_t maxTiles = std::max(1u, 2048u / f.mapSize);
+  s.perRow = 1;
+  while ((s.channels + s.perRow - 1) / s.perRow > maxTiles) s.perRow *= 2;
+  return s;
+}
+
+TextureDesc ScratchLayout::desc(const ClipMapFormat& f) const {
+  TextureDesc d;
+  d.type = TextureType::Tex3D;
+  d.format = VK_FORMAT_R32_SFLOAT;
+  d.width = f.mapSize * perRow;
+  d.height = f.mapSize;
+  d.depth = f.mapSize * ((channels + perRow - 1) / perRow);
+  return d;
+}
+
 bool ClipMapTextures::configure(const ClipMapFormat& format) {
   if (configured_ && format == format_) return false;
   format_ = format;
@@ -50,6 +71,8 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
   const uint64_t bricks = uint64_t(format.mapSize / kBrickVoxels);
   brickFlags_ = std::make_unique<PersistentBuffer>(
       "VXGI.BrickFlags", BufferDesc{bricks * bricks * bricks * format.stackLevels * sizeof(uint32_t)});
+  scratch_ = std::make_unique<PersistentTexture>("VXGI.Scratch", ScratchLayout::of(format).desc(format));
+  scratchClean_ = false;
   return true;
 }
 
@@ -61,6 +84,8 @@ ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
   // this frame voxelizes everything, and must first mark every brick as possibly non-zero.
   h.brickFlagsUndefined = brickFlags_->allocation() == nullptr;
   h.brickFlags = graph.importBuffer(*brickFlags_);
+  h.scratchUndefined = scratch_->allocation() == nullptr || !scratchClean_;
+  h.scratch = graph.importTexture(*scratch_);
   return h;
 }
 
@@ -88,6 +113,8 @@ uint64_t ClipMapTextures::bytes() const {
     for (const auto& t : *list) total += textureBytes(t->desc());
   return total;
 }
+
+uint64_t ClipMapTextures::scratchBytes() const { return scratch_ ? textureBytes(scratch_->desc()) : 0; }
 
 ClipMapConstants makeConstants(const ClipMapLayout& layout, float emittanceDecode) {
   ClipMapConstants c{};

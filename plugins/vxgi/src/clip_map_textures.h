@@ -28,6 +28,23 @@ struct ClipMapHandles {
   /// True when brickFlags' contents are undefined (just created): the first voxelization
   /// sets every flag, so every brick is resolved once.
   bool brickFlagsUndefined = false;
+  /// The voxelization's float sums (ScratchLayout), persistent and all zeros between
+  /// voxelizations: each resolve zeroes the sums it read, so no level clears the volume.
+  TextureHandle scratch;
+  /// True when the scratch volume may hold anything (just created, or a voxelizing frame
+  /// was not recorded to its end): this frame's voxelization clears it first.
+  bool scratchUndefined = false;
+};
+
+/// The voxelization scratch volume of float sums: `channels` per voxel (4 per facing
+/// direction: rgb × coverage and coverage; 1 in ambient-occlusion mode), tiled `perRow`
+/// along X and the rest along Z so no side exceeds 2048 texels (the usual
+/// maxImageDimension3D). perRow is a power of two so shaders find a channel's tile with
+/// masks and shifts (vxgi/scratch.glsl). R32F, because image float atomics need it.
+struct ScratchLayout {
+  uint32_t channels = 0, perRow = 1;
+  static ScratchLayout of(const ClipMapFormat& format);
+  TextureDesc desc(const ClipMapFormat& format) const;
 };
 
 class ClipMapTextures {
@@ -38,20 +55,29 @@ class ClipMapTextures {
 
   /// Imports every texture into `graph` (constants are left invalid).
   ClipMapHandles import(RenderGraph& graph);
+  /// A frame that voxelizes was recorded to its end: every sum it added was resolved, and
+  /// so zeroed again (until then the next frame clears the scratch volume itself).
+  void scratchResolved() { scratchClean_ = true; }
+  /// A frame that voxelizes is being built: its sums are in flight until scratchResolved.
+  void scratchInUse() { scratchClean_ = false; }
 
   /// Declares a pass's sampled reads of every texture and the constants; returns the
   /// versions it reads.
   static ClipMapHandles readSampled(PassBuilder& builder, ClipMapHandles handles);
   /// Sampled bindings for tracing and debug shaders (names of clip_map.glsl).
   static void bindSampled(gpu::Bindings& bindings, const ClipMapHandles& handles);
-  /// Bytes of all textures, from their descriptions (equals format().bytes()).
+  /// Bytes of all clip-map textures, from their descriptions (equals format().bytes());
+  /// the scratch volume is scratchBytes().
   uint64_t bytes() const;
+  uint64_t scratchBytes() const;
 
  private:
   ClipMapFormat format_{};
   bool configured_ = false;
   std::vector<std::unique_ptr<PersistentTexture>> clip_, mips_;
   std::unique_ptr<PersistentBuffer> brickFlags_;
+  std::unique_ptr<PersistentTexture> scratch_;
+  bool scratchClean_ = false;
 };
 
 /// Voxels per side of a brick of the clip-map (VXGI_BRICK_SHIFT in vxgi/scratch.glsl).

@@ -44,31 +44,6 @@ gpu::ShaderSource downsampleShader(const std::filesystem::path& shaders, const C
   return shader(shaders, "downsample.comp", format, "VXGI_DOWNSAMPLE_MODE", mode);
 }
 
-// The scratch volume of float sums: `channels` per voxel (4 per facing direction: rgb ×
-// coverage and coverage; 1 in ambient-occlusion mode), tiled `perRow` along X and the
-// rest along Z so no side exceeds 2048 texels (the usual maxImageDimension3D). perRow is
-// a power of two so shaders find a channel's tile with masks and shifts (scratch.glsl).
-struct ScratchLayout {
-  uint32_t channels = 0, perRow = 1;
-  static ScratchLayout of(const ClipMapFormat& f) {
-    ScratchLayout s;
-    s.channels = f.directionCount() * (f.ambientOcclusionMode ? 1u : 4u);
-    const uint32_t maxTiles = std::max(1u, 2048u / f.mapSize);
-    s.perRow = 1;
-    while ((s.channels + s.perRow - 1) / s.perRow > maxTiles) s.perRow *= 2;
-    return s;
-  }
-  TextureDesc desc(const ClipMapFormat& f) const {
-    TextureDesc d;
-    d.type = TextureType::Tex3D;
-    d.format = VK_FORMAT_R32_SFLOAT;
-    d.width = f.mapSize * perRow;
-    d.height = f.mapSize;
-    d.depth = f.mapSize * ((channels + perRow - 1) / perRow);
-    return d;
-  }
-};
-
 struct VoxelizePush {
   glm::ivec4 regionMin, regionMax, innerMin, innerMax, scratchLayout;
   glm::vec4 ambient;  // rgb: constant irradiance added; w: light count
@@ -156,16 +131,29 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     // this first voxelization resolves (and clears) the whole clip-map.
     const bool fillFlags = handles.brickFlagsUndefined;
     if (fillFlags) handles.brickFlags = b.write(handles.brickFlags, Access::TransferDst);
+    // The scratch sums are zeros between voxelizations (each resolve zeroes what it read)
+    // once they have been zeroed: here, when just allocated or after a frame that did not
+    // get as far as its resolves.
+    const bool clearScratch = handles.scratchUndefined;
+    if (clearScratch) handles.scratch = b.write(handles.scratch, Access::TransferDst);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     BufferHandle mb = materialBuffer, lb = lightBuffer, flags = handles.brickFlags;
+    TextureHandle sums = handles.scratch;
     return [=](PassContext& ctx) {
       ctx.upload(mb, materialParams.data(), materialParams.size() * sizeof(glm::vec4));
       ctx.upload(lb, lightFlags.data(), lightFlags.size() * sizeof(uint32_t));
       if (fillFlags) vkCmdFillBuffer(ctx.cmd(), ctx.buffer(flags).handle(), 0, VK_WHOLE_SIZE, 1u);
+      if (clearScratch) {
+        VkClearColorValue zero{};
+        VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(ctx.cmd(), ctx.image(sums).handle(), ctx.layout(sums), &zero, 1, &range);
+        const VkExtent3D e = ctx.image(sums).extent();
+        ctx.addWork(WorkUnit::ImageBytes, uint64_t(e.width) * e.height * e.depth * 4u);  // R32F written
+      }
     };
   });
 
-  TextureHandle scratchTexture;
+  TextureHandle& scratchTexture = handles.scratch;
   BufferHandle occupancy;  // VxgiBrickOccupancy: one uint per brick of the level being voxelized
   BufferHandle resolveArguments, brickList;            // brick_list.comp's indirect dispatch and bricks
   BufferHandle downsampleArguments, downsampleBricks;  // downsample_list.comp's
@@ -207,10 +195,10 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                        : PassDecision::skip(fmt::format("{} at this level", reason));
     };
 
-    // Zero the sums: the previous level (or frame) left its own in them.
+    // Empty the brick lists of the previous level (or frame). The scratch sums need no
+    // clear: the previous resolve zeroed every sum it read.
     graph.addPass(
-        fmt::format("VXGI.ClearScratch.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-          if (!scratchTexture.valid()) scratchTexture = b.createTexture("VXGI.Scratch", scratch.desc(format));
+        fmt::format("VXGI.ResetBricks.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
           if (!occupancy.valid()) {
             occupancy = b.createBuffer("VXGI.BrickOccupancy", {uint64_t(bricksPerLevel) * sizeof(uint32_t)});
             resolveArguments = b.createBuffer("VXGI.ResolveArguments", {sizeof(glm::uvec4)});
@@ -219,20 +207,15 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             downsampleBricks =
                 b.createBuffer("VXGI.DownsampleBricks", {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
           }
-          scratchTexture = b.write(scratchTexture, Access::TransferDst);
           occupancy = b.write(occupancy, Access::TransferDst);
           resolveArguments = b.write(resolveArguments, Access::TransferDst);
           brickList = b.write(brickList, Access::TransferDst);
           downsampleArguments = b.write(downsampleArguments, Access::TransferDst);
           downsampleBricks = b.write(downsampleBricks, Access::TransferDst);
           b.condition(decide);
-          TextureHandle sums = scratchTexture;
           BufferHandle occupied = occupancy, arguments = resolveArguments, list = brickList,
                        downsampleArgs = downsampleArguments, downsampleList = downsampleBricks;
           return [=](PassContext& ctx) {
-            VkClearColorValue zero{};
-            VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-            vkCmdClearColorImage(ctx.cmd(), ctx.image(sums).handle(), ctx.layout(sums), &zero, 1, &range);
             vkCmdFillBuffer(ctx.cmd(), ctx.buffer(occupied).handle(), 0, VK_WHOLE_SIZE, 0u);
             // No workgroups and no bricks listed yet (brick_list.comp counts them).
             const glm::uvec4 noGroups(0u, 1u, 1u, 0u);
@@ -240,8 +223,6 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             vkCmdFillBuffer(ctx.cmd(), ctx.buffer(list).handle(), 0, sizeof(uint32_t), 0u);
             vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(downsampleArgs).handle(), 0, sizeof(noGroups), &noGroups);
             vkCmdFillBuffer(ctx.cmd(), ctx.buffer(downsampleList).handle(), 0, sizeof(uint32_t), 0u);
-            const VkExtent3D e = ctx.image(sums).extent();
-            ctx.addWork(WorkUnit::ImageBytes, uint64_t(e.width) * e.height * e.depth * 4u);  // R32F written
           };
         });
 
@@ -374,7 +355,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     });
 
     graph.addPass(fmt::format("VXGI.Resolve.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-      TextureHandle sums = b.read(scratchTexture, Access::StorageRead);
+      // Read, and zeroed where it held sums, for the next level or frame.
+      scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+      TextureHandle sums = scratchTexture;
       BufferHandle constants = b.read(handles.constants, Access::StorageRead);
       BufferHandle arguments, list;
       if (wholeLevel) {

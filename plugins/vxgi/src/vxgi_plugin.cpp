@@ -140,8 +140,13 @@ class VxgiPlugin final : public Plugin {
       plan.reason = "no material is used with VXGI voxelization and no test cube";
     }
     auto committed = std::make_shared<VoxelizationPlan>(plan);
-    addVoxelizationPasses(graph, frame, settings_, f.handles, plan, record_,
-                          [this, committed] { update_.commit(*committed); });
+    // Until this frame's voxelization is recorded to its end, its sums may be left in the
+    // scratch volume: the next frame would clear it first.
+    if (!plan.empty()) textures_.scratchInUse();
+    addVoxelizationPasses(graph, frame, settings_, f.handles, plan, record_, [this, committed] {
+      update_.commit(*committed);
+      textures_.scratchResolved();
+    });
     lastPlanReason_ = plan.reason;
     lastLayout_ = layout;
     f.voxelsChanged = !plan.empty();
