@@ -261,6 +261,16 @@ TEST_F(ViewerVxgiTest, MapSizeAndDiffuseConesChangeWhileRunning) {
   ASSERT_NE(before, std::string::npos) << output();
   ASSERT_NE(after, std::string::npos) << output();
   EXPECT_LT(before, after);
+  // The voxelization's scratch volume is persistent, so the rebuild replaced it too: 8×
+  // the voxels, 8× the MiB (3.0 and 24.0 with six facing directions).
+  auto scratchMiB = [this](size_t from) {
+    const std::string key = "voxelization scratch volume: ";
+    const size_t at = output().find(key, from);
+    return at == std::string::npos ? -1.0 : std::stod(output().substr(at + key.size()));
+  };
+  const double scratch32 = scratchMiB(before), scratch64 = scratchMiB(after);
+  EXPECT_GT(scratch32, 0.0) << output();
+  EXPECT_NEAR(scratch64, 8.0 * scratch32, 0.1) << output();
   // Rendering is deterministic: without a change the same view repeats exactly (the
   // opacity view across the cone change, which it does not use)...
   const ImageBuffer opacity32 = screenshot("vxgi-opacity.png"),

@@ -175,6 +175,8 @@ class VxgiPlugin final : public Plugin {
         fmt::format("{} B per voxel, {:.1f} MiB ({:.1f} MiB levels + {:.1f} MiB mips)", f.bytesPerVoxel(),
                     double(f.bytes()) / 1048576.0, double(f.clipBytes()) / 1048576.0,
                     double(f.mipBytes()) / 1048576.0),
+        // Persistent: zeros between voxelizations, so no frame clears it whole.
+        fmt::format("voxelization scratch volume: {:.1f} MiB", double(textures_.scratchBytes()) / 1048576.0),
         fmt::format("last update: {}", lastPlanReason_)};
     if (lastLayout_)
       for (size_t l = 0; l < lastLayout_->levels().size(); ++l) {
