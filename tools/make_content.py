@@ -358,9 +358,9 @@ def closed_room(x_min, x_max, thickness, skip_walls=()):
             yield name, Geometry().box(size), center
 
 
-def furnace_room(note, emission=FURNACE_EMISSION):
+def furnace_room(note, emission=FURNACE_EMISSION, albedo=FURNACE_ALBEDO):
     s = GltfScene(note)
-    wall = s.material("FurnaceWall", (FURNACE_ALBEDO,) * 3, emissive=emission, extras=VOXELIZE_FLAG)
+    wall = s.material("FurnaceWall", (albedo,) * 3, emissive=emission, extras=VOXELIZE_FLAG)
     r = ROOM_SIZE / 2
     for name, geometry, center in closed_room(-r, r, WALL_THICKNESS):
         s.object(name, geometry, wall, center)
@@ -407,8 +407,12 @@ def hdr_emitter():
     return s
 
 
-def small_emitter():
-    s, _ = furnace_room("dark room of albedo 0.5 lit only by a 2 cm emissive cube", emission=None)
+def small_emitter(albedo=FURNACE_ALBEDO):
+    """A 2 cm emissive cube 1 m above the floor of a closed room. With `albedo` 0 the room
+    reflects nothing, so a path tracer's image is the cube's light alone: what VXGI's one
+    bounce of it should match."""
+    s, _ = furnace_room("dark room of albedo %g lit only by a 2 cm emissive cube" % albedo, emission=None,
+                        albedo=albedo)
     glow = s.material("Glow", (0.0, 0.0, 0.0), emissive=(1.0, 1.0, 1.0), emissive_strength=SMALL_EMITTER_RADIANCE,
                       extras=VOXELIZE_FLAG)
     s.object("Emitter", Geometry().box((SMALL_EMITTER_SIZE,) * 3), glow, (0, SMALL_EMITTER_HEIGHT, 0))
@@ -521,6 +525,7 @@ def main():
     cornell_box(flagged=False).write(os.path.join(tests, "no_flagged_materials.gltf"))
     hdr_emitter().write(os.path.join(tests, "hdr_emitter.gltf"))
     small_emitter().write(os.path.join(tests, "small_emitter.gltf"))
+    small_emitter(albedo=0.0).write(os.path.join(tests, "small_emitter_black_room.gltf"))
     degenerate_geometry().write(os.path.join(tests, "degenerate_geometry.gltf"))
     tiny_scene().write(os.path.join(tests, "tiny_scene.gltf"))
     sunlit_room().write(os.path.join(tests, "sunlit_room.gltf"))

@@ -153,9 +153,14 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
   // behind the wall a cone leaves, whose back face darkened it, while with 16 or 32 cones
   // (narrower, so reaching less far behind) the same code read 1.11 and 1.12. Since each
   // facing direction reads only what lies in front of the cone's apex (clip_map.glsl,
-  // vxgiSampleAhead) it measures 1.090, walls 0.877–1.191, ceiling 1.047 (at 128³: 0.997).
+  // vxgiSampleAhead) it measured 1.090, walls 0.877–1.191, ceiling 1.047 (at 128³: 0.997).
+  // The coarser level could still reach up to 1.5 of its voxels behind the apex; since its
+  // fetch moves until it cannot (clip_map.glsl, vxgiCoarsePosition: what stopped sunlit
+  // walls leaking through to the room) it measures 1.201, left / right / back wall
+  // 1.104 / 1.385 / 0.955, ceiling 1.008: the rest of the cancellation above is gone, and
+  // the left/right difference is the 8 cones' pattern (the spiral turns one way).
   // Bounds: the measured values ± 0.06 (the reference's noise, < 3%, plus as much again):
-  // the image within [1.03, 1.15], each wall and the ceiling within [0.82, 1.25].
+  // the image within [1.14, 1.26], each wall and the ceiling within [0.89, 1.45].
   // Every pixel traced: this measures the cones; sparse tracing has its own test below.
   start("content/cornell_box.gltf", with(kSmall, {"r.VXGI.MapSize=64", "r.VXGI.DiffuseSparsity=1"}), "VXGI");
   RenderedFrame vxgi = render(32, 32, {"indirect-irradiance"});
@@ -182,8 +187,8 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
         meanRgb(a, r.x0, r.y0, r.x1, r.y1) / std::max(meanRgb(b, r.x0, r.y0, r.x1, r.y1), 1e-9);
     std::printf("%s: VXGI / one-bounce reference = %.3f\n", r.name, ratio);
     const bool whole = std::string(r.name) == "image";
-    EXPECT_GT(ratio, whole ? 1.03 : 0.82) << r.name;
-    EXPECT_LT(ratio, whole ? 1.15 : 1.25) << r.name;
+    EXPECT_GT(ratio, whole ? 1.14 : 0.89) << r.name;
+    EXPECT_LT(ratio, whole ? 1.26 : 1.45) << r.name;
   }
 }
 

@@ -119,24 +119,27 @@ TEST_F(VxgiSunlitRoom, SunlitOuterFacesDoNotFloodTheRoom) {
   // reached behind the cones' apexes into the roof's and the outer faces' emittance. Now
   // that each facing direction reads only what lies in front of the apex (clip_map.glsl,
   // vxgiSampleAhead): window wall 1.14 / 1.12 / 1.04, view 1.21 / 1.21 / 1.08, the
-  // brightest wall 1.97 / 2.15 / 1.44 (the right one; the left ones read 1.08 / 1.11 / 0.66:
-  // the 8 cones are not mirror images on the two walls; with 32 they agree, 0.91–1.22).
-  // Bounds: the measured values plus about 25% (the reference's noise is ~2%): window wall
-  // below 1.4, view below 1.5, every wall below 2.6; each fails the code before.
+  // brightest wall 1.97 / 2.15 / 1.44. Since the coarser level's fetch also stays in front
+  // of the apex across the cone's main axis and in front of the surface the cone leaves
+  // (vxgiCoarsePosition): window wall 1.28 / 1.26 / 1.19, view 1.30 / 1.30 / 1.16, the
+  // brightest wall 1.92 / 2.10 / 1.20 (the right one; the left ones read 1.15 / 1.15 / 1.10,
+  // the 8 cones are not mirror images on the two walls; with 32 they agreed, 0.91–1.22).
+  // Bounds: the measured values plus 10–25% (the reference's noise is ~2%): window wall
+  // below 1.4, view below 1.5, every wall below 2.4; each fails the code before 6bc1895.
   //
   // Not met yet: no wall brighter than the reference.
   struct Case {
     const char* scene;
     double windowWall, view, brightest;  // measured ratios to the reference
   };
-  for (const Case& c : {Case{"content/tests/sunlit_room_10cm_window_view.gltf", 1.14, 1.21, 1.97},
-                        Case{"content/tests/sunlit_room_window_view.gltf", 1.12, 1.21, 2.15},
-                        Case{"content/tests/sunlit_room_10cm_offset_window.gltf", 1.04, 1.08, 1.44}}) {
+  for (const Case& c : {Case{"content/tests/sunlit_room_10cm_window_view.gltf", 1.28, 1.30, 1.92},
+                        Case{"content/tests/sunlit_room_window_view.gltf", 1.26, 1.30, 2.10},
+                        Case{"content/tests/sunlit_room_10cm_offset_window.gltf", 1.19, 1.16, 1.20}}) {
     const WallLight w = measure(c.scene, {"r.VXGI.MapSize=64", "r.VXGI.VoxelSize=0.1"});
     ASSERT_GT(w.pixels[5], 1000u) << c.scene << ": the window wall fills most of the view";
     EXPECT_LT(w.ratio(5), 1.4) << c.scene << " (measured " << c.windowWall << ")";
     EXPECT_LT(w.vxgiAll / w.referenceAll, 1.5) << c.scene << " (measured " << c.view << ")";
-    EXPECT_LT(brightestWall(w), 2.6) << c.scene << " (measured " << c.brightest << ")";
+    EXPECT_LT(brightestWall(w), 2.4) << c.scene << " (measured " << c.brightest << ")";
     // The light that is there comes from the sun patch: the window wall sees it at least
     // nearly as brightly as the reference (a fix that just darkened everything would fail here).
     EXPECT_GT(w.ratio(5), 0.8) << c.scene;
@@ -149,20 +152,26 @@ TEST_F(VxgiSunlitRoom, DefaultSettingsKeepTheOuterFacesOut) {
   // 1.4 and 2.8 voxels thick at the finest level and a tenth and a fifth of one at the
   // coarsest (1.1 m).
   // Before each facing direction read only what lies in front of the cone's apex, the view
-  // read 7.8 and 4.4 times the one-bounce reference, the brightest wall 9.6 and 7.1. Now
-  // the view reads 4.07 and 2.11, the window wall 4.88 and 2.42 (its own sunlit outer face,
-  // through the coarser of each sample's two levels, which may still reach behind the
-  // apex: clip_map.glsl, VXGI_APEX_REACH), the other walls 1.11–1.44.
-  // Bounds: the measured values plus about 25%, far below the old leak.
+  // read 7.8 and 4.4 times the one-bounce reference, the brightest wall 9.6 and 7.1. Then
+  // the view read 4.07 and 2.11, the window wall 4.88 and 2.42: the sunlit outer faces,
+  // through the coarser of each sample's two levels, which could still reach 1.5 of its
+  // voxels behind the apex (1.1 m voxels at the coarsest level, and the pyramid's upper mip
+  // coarser still; the z-facing slot of samples 1–3 m into the room carried it all,
+  // measured by zeroing it by distance). Since that fetch moves until it cannot
+  // (clip_map.glsl, vxgiCoarsePosition): view 1.19 and 1.15, window wall 1.00 and 1.03,
+  // brightest wall 1.73 and 1.58 (the right one again).
+  // Bounds: the measured values plus about 25%: view below 1.5, every wall below 2.2, the
+  // window wall within [0.8, 1.3]. The code before fails the view and window wall bounds.
   struct Case {
     const char* scene;
-    double view, brightest, bound;
+    double view, windowWall, brightest;
   };
-  for (const Case& c : {Case{"content/tests/sunlit_room_10cm_window_view.gltf", 4.07, 4.88, 6.0},
-                        Case{"content/tests/sunlit_room_window_view.gltf", 2.11, 2.42, 3.0}}) {
+  for (const Case& c : {Case{"content/tests/sunlit_room_10cm_window_view.gltf", 1.19, 1.00, 1.73},
+                        Case{"content/tests/sunlit_room_window_view.gltf", 1.15, 1.03, 1.58}}) {
     const WallLight w = measure(c.scene, {"r.VXGI.MapSize=128", "r.VXGI.StackLevels=5"});
-    EXPECT_LT(w.vxgiAll / w.referenceAll, 1.25 * c.view) << c.scene << " (measured " << c.view << ")";
-    EXPECT_LT(brightestWall(w), c.bound) << c.scene << " (measured " << c.brightest << ")";
+    EXPECT_LT(w.vxgiAll / w.referenceAll, 1.5) << c.scene << " (measured " << c.view << ")";
+    EXPECT_LT(brightestWall(w), 2.2) << c.scene << " (measured " << c.brightest << ")";
+    EXPECT_LT(w.ratio(5), 1.3) << c.scene << " (measured " << c.windowWall << ")";
     EXPECT_GT(w.ratio(5), 0.8) << c.scene;
   }
 }

@@ -282,13 +282,42 @@ VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
 #else
 #define VXGI_MIP_SLOT(pos, neg, c, mip, w) textureLod(pos, c, mip)
 #endif
+// Where the coarser of a slot's two levels is read, for voxels of edge v there. A
+// trilinear fetch weighs voxel centres up to v away, each holding what lies up to v/2
+// further: 1.5 v. The cut (vxgiClipToApex) sizes the filter by the footprint, which the
+// coarser level's voxels exceed by up to 2× (and a fractional pyramid mip's upper mip by
+// up to 4×), so that fetch still reached behind the cone's apex: with 1.1 m voxels at
+// the defaults' coarsest level it read a 10 cm wall's sunlit outer face through the wall
+// from a metre into the room (the window walls of the sunlit rooms 2.4–4.9× the path
+// tracer, the worst wall 7.5×; vxgi README). So that one fetch moves forward until its
+// reach clears two planes:
+//  - the apex's plane across the cone's main axis, when the slot is that axis (what a
+//    slot along a minor axis would move is the cone's side: a sideways move reads beside
+//    the cone, and a 2 cm emitter's floor lost a fifth of its light that way);
+//  - the plane of the surface the cone leaves (surface: unit normal, and n·x there; n = 0
+//    for none), along its normal: nothing behind a surface is in its hemisphere.
+// The finer level stays where the cut put it (it reaches 1.5 footprints at most).
+const float VXGI_COARSE_REACH = 1.5;
+vec3 vxgiCoarsePosition(vec3 p, vec3 r, vec3 apex, vec4 surface, int axis, float v) {
+  float reach = VXGI_COARSE_REACH * v;
+  vec3 a = abs(r);
+  if (a[axis] >= max(a.x, max(a.y, a.z))) {
+    float s = r[axis] >= 0.0 ? 1.0 : -1.0;
+    p[axis] = apex[axis] + s * max(s * (p[axis] - apex[axis]), reach);
+  }
+  // Along n a trilinear fetch reaches 1.5 v·|n|₁ (each axis's reach, projected).
+  vec3 n = surface.xyz;
+  float below = reach * (abs(n.x) + abs(n.y) + abs(n.z)) - (dot(n, p) - surface.w);
+  return p + n * max(below, 0.0);
+}
+
 // One facing slot (texture `clip` of the stack, `mipPos`/`mipNeg` of the pyramid) at
-// footprint d around p, from the levels vxgiChooseLevels picks.
-// `used`: the footprint the value is per (wider than d where p lies outside the finer
-// levels). A macro because GLSL cannot pass samplers chosen at run time without a branch
-// per fetch (a CPU device runs every side of it).
+// footprint d around p, from the levels vxgiChooseLevels picks; the coarser one read at
+// vxgiCoarsePosition. `used`: the footprint the value is per (wider than d where p lies
+// outside the finer levels). A macro because GLSL cannot pass samplers chosen at run
+// time without a branch per fetch (a CPU device runs every side of it).
 #define VXGI_DEFINE_SLOT(name, clip, mipPos, mipNeg, axis)                                   \
-  vec4 name(vec3 p, float d, vec3 r, out float used) {                                     \
+  vec4 name(vec3 p, float d, vec3 r, vec3 apex, vec4 surface, out float used) {            \
     VxgiLevels c;                                                                          \
     used = max(d, clipMap.voxelSize0);                                                     \
     if (!vxgiChooseLevels(p, d, c)) return vec4(0.0); /* outside the clip-map */           \
@@ -298,8 +327,12 @@ VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
     bool pyramid = c.level == clipMap.levelCount - 1;                                      \
     vxgiFetches += pyramid ? 1u + uint(VXGI_SIGNS) : 2u; /* the pyramid: both signs */     \
     vec4 a = textureLod(clip, vxgiClipCoord(p, c.level) + signOffset, 0.0);                \
-    if (!pyramid) return mix(a, textureLod(clip, vxgiClipCoord(p, c.level + 1) + signOffset, 0.0), c.blend); \
-    return mix(a, VXGI_MIP_SLOT(mipPos, mipNeg, vxgiMipCoord(p), c.mip, positive), c.blend); \
+    /* The coarser voxels: the next level's, or the pyramid's upper mip of the two the */  \
+    /* hardware blends (mip m has voxels 2^(m+1) × the coarsest level's). */               \
+    float v = vxgiVoxelSize(c.level) * (pyramid ? exp2(ceil(c.mip) + 1.0) : 2.0);          \
+    vec3 q = vxgiCoarsePosition(p, r, apex, surface, axis, v);                             \
+    if (!pyramid) return mix(a, textureLod(clip, vxgiClipCoord(q, c.level + 1) + signOffset, 0.0), c.blend); \
+    return mix(a, VXGI_MIP_SLOT(mipPos, mipNeg, vxgiMipCoord(q), c.mip, positive), c.blend); \
   }
 #if VXGI_DIRECTIONS == 6
 VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, voxelsMip0, voxelsMip3, 0)
@@ -338,7 +371,7 @@ void vxgiClipToApex(vec3 p, float d, vec3 r, vec3 apex, int axis, out vec3 q, ou
 // vxgiSample for a cone whose apex is `apex`: each facing slot reads only what lies in
 // front of the apex's plane across its axis. Three slots at their own places and widths
 // take as many fetches as one shared sample (two levels each).
-VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, vec3 r, vec3 apex, out bool valid) {
+VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, vec3 r, vec3 apex, vec4 surface, out bool valid) {
   VxgiSample s;
   s.emittance = vec3(0.0);
   s.density = 0.0;
@@ -353,7 +386,8 @@ VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, vec3 r, vec3 apex, out 
   vxgiClipToApex(p, diameter, r, apex, 0, qx, dx);
   vxgiClipToApex(p, diameter, r, apex, 1, qy, dy);
   vxgiClipToApex(p, diameter, r, apex, 2, qz, dz);
-  vec4 x = vxgiSlotX(qx, dx, r, ux), y = vxgiSlotY(qy, dy, r, uy), z = vxgiSlotZ(qz, dz, r, uz);
+  vec4 x = vxgiSlotX(qx, dx, r, apex, surface, ux), y = vxgiSlotY(qy, dy, r, apex, surface, uy),
+       z = vxgiSlotZ(qz, dz, r, apex, surface, uz);
   // A slot's density (and emittance, radiance × density) is per its own footprint; the
   // caller counts optical depth per `diameter`. ux..uz ≥ the finest voxel: no division by 0.
   return vxgiCombine(r, x * (diameter / ux), y * (diameter / uy), z * (diameter / uz));
