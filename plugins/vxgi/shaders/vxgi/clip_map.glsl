@@ -277,6 +277,27 @@ VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
 // slabs stopped cones on their own back faces). So each slot is sampled on its own, with
 // its filter cut at the apex's plane (vxgiClipToApex).
 
+// What a cone's samples must stay in front of, fixed for the whole cone (vxgiConeStart).
+struct VxgiConeStart {
+  vec3 direction;   // r, unit
+  vec3 apex;        // where marching starts
+  vec3 mainAxes;    // 1 on the axes where |r| is largest (vxgiCoarsePosition), else 0
+  vec3 normal;      // of the surface the cone leaves, unit; 0 for none
+  float height;     // n·x on that surface: a point's height above it is n·p − height
+  float normalSpan; // |n|₁: how far along n a reach of 1 along each axis goes
+};
+VxgiConeStart vxgiConeStart(vec3 r, vec3 apex, vec3 n, float surfaceDistance) {
+  VxgiConeStart c;
+  c.direction = r;
+  c.apex = apex;
+  vec3 a = abs(r);
+  c.mainAxes = step(vec3(max(a.x, max(a.y, a.z))), a);
+  c.normal = n;
+  c.height = dot(n, apex) - surfaceDistance;
+  c.normalSpan = abs(n.x) + abs(n.y) + abs(n.z);
+  return c;
+}
+
 #if VXGI_DIRECTIONS == 6
 #define VXGI_MIP_SLOT(pos, neg, c, mip, w) mix(textureLod(pos, c, mip), textureLod(neg, c, mip), w)
 #else
@@ -294,21 +315,19 @@ VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
 //  - the apex's plane across the cone's main axis, when the slot is that axis (what a
 //    slot along a minor axis would move is the cone's side: a sideways move reads beside
 //    the cone, and a 2 cm emitter's floor lost a fifth of its light that way);
-//  - the plane of the surface the cone leaves (surface: unit normal, and n·x there; n = 0
-//    for none), along its normal: nothing behind a surface is in its hemisphere.
+//  - the plane of the surface the cone leaves, along its normal: nothing behind a surface
+//    is in its hemisphere.
 // The finer level stays where the cut put it (it reaches 1.5 footprints at most).
 const float VXGI_COARSE_REACH = 1.5;
-vec3 vxgiCoarsePosition(vec3 p, vec3 r, vec3 apex, vec4 surface, int axis, float v) {
+vec3 vxgiCoarsePosition(vec3 p, VxgiConeStart cone, int axis, float v) {
   float reach = VXGI_COARSE_REACH * v;
-  vec3 a = abs(r);
-  if (a[axis] >= max(a.x, max(a.y, a.z))) {
-    float s = r[axis] >= 0.0 ? 1.0 : -1.0;
-    p[axis] = apex[axis] + s * max(s * (p[axis] - apex[axis]), reach);
+  if (cone.mainAxes[axis] > 0.5) {
+    float s = cone.direction[axis] >= 0.0 ? 1.0 : -1.0;
+    p[axis] = cone.apex[axis] + s * max(s * (p[axis] - cone.apex[axis]), reach);
   }
   // Along n a trilinear fetch reaches 1.5 v·|n|₁ (each axis's reach, projected).
-  vec3 n = surface.xyz;
-  float below = reach * (abs(n.x) + abs(n.y) + abs(n.z)) - (dot(n, p) - surface.w);
-  return p + n * max(below, 0.0);
+  float below = reach * cone.normalSpan - (dot(cone.normal, p) - cone.height);
+  return p + cone.normal * max(below, 0.0);
 }
 
 // One facing slot (texture `clip` of the stack, `mipPos`/`mipNeg` of the pyramid) at
@@ -317,12 +336,12 @@ vec3 vxgiCoarsePosition(vec3 p, vec3 r, vec3 apex, vec4 surface, int axis, float
 // outside the finer levels). A macro because GLSL cannot pass samplers chosen at run
 // time without a branch per fetch (a CPU device runs every side of it).
 #define VXGI_DEFINE_SLOT(name, clip, mipPos, mipNeg, axis)                                   \
-  vec4 name(vec3 p, float d, vec3 r, vec3 apex, vec4 surface, out float used) {            \
+  vec4 name(vec3 p, float d, VxgiConeStart cone, out float used) {                         \
     VxgiLevels c;                                                                          \
     used = max(d, clipMap.voxelSize0);                                                     \
     if (!vxgiChooseLevels(p, d, c)) return vec4(0.0); /* outside the clip-map */           \
     used = c.used;                                                                         \
-    float positive = r[axis] > 0.0 ? 1.0 : 0.0;                                            \
+    float positive = cone.direction[axis] > 0.0 ? 1.0 : 0.0;                               \
     vec3 signOffset = vec3(0.0, positive * vxgiSignOffset() * float(VXGI_SIGNS - 1), 0.0);  \
     bool pyramid = c.level == clipMap.levelCount - 1;                                      \
     vxgiFetches += pyramid ? 1u + uint(VXGI_SIGNS) : 2u; /* the pyramid: both signs */     \
@@ -330,7 +349,7 @@ vec3 vxgiCoarsePosition(vec3 p, vec3 r, vec3 apex, vec4 surface, int axis, float
     /* The coarser voxels: the next level's, or the pyramid's upper mip of the two the */  \
     /* hardware blends (mip m has voxels 2^(m+1) × the coarsest level's). */               \
     float v = vxgiVoxelSize(c.level) * (pyramid ? exp2(ceil(c.mip) + 1.0) : 2.0);          \
-    vec3 q = vxgiCoarsePosition(p, r, apex, surface, axis, v);                             \
+    vec3 q = vxgiCoarsePosition(p, cone, axis, v);                                         \
     if (!pyramid) return mix(a, textureLod(clip, vxgiClipCoord(q, c.level + 1) + signOffset, 0.0), c.blend); \
     return mix(a, VXGI_MIP_SLOT(mipPos, mipNeg, vxgiMipCoord(q), c.mip, positive), c.blend); \
   }
@@ -358,20 +377,20 @@ const float VXGI_APEX_REACH = 1.5;
 // spans VXGI_APEX_REACH·d each way along the axis; the part behind the apex's plane is
 // cut off and the filter narrows to what is left, keeping its front edge. A filter wholly
 // ahead of the plane is unchanged, and one centred on the plane keeps its front half.
-void vxgiClipToApex(vec3 p, float d, vec3 r, vec3 apex, int axis, out vec3 q, out float da) {
-  float s = r[axis] >= 0.0 ? 1.0 : -1.0;
-  float ahead = max(s * (p[axis] - apex[axis]), 0.0);  // p's distance in front of the plane
+void vxgiClipToApex(vec3 p, float d, VxgiConeStart cone, int axis, out vec3 q, out float da) {
+  float s = cone.direction[axis] >= 0.0 ? 1.0 : -1.0;
+  float ahead = max(s * (p[axis] - cone.apex[axis]), 0.0);  // p's distance in front of the plane
   float h = VXGI_APEX_REACH * d;
   float kept = min(0.5 * (ahead + h), h);  // half-width left, ≥ h / 2
   q = p;
-  q[axis] = apex[axis] + s * (ahead + h - kept);
+  q[axis] = cone.apex[axis] + s * (ahead + h - kept);
   da = d * kept / h;
 }
 
-// vxgiSample for a cone whose apex is `apex`: each facing slot reads only what lies in
-// front of the apex's plane across its axis. Three slots at their own places and widths
-// take as many fetches as one shared sample (two levels each).
-VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, vec3 r, vec3 apex, vec4 surface, out bool valid) {
+// vxgiSample for a sample of `cone`: each facing slot reads only what lies in front of
+// the apex's plane across its axis. Three slots at their own places and widths take as
+// many fetches as one shared sample (two levels each).
+VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, VxgiConeStart cone, out bool valid) {
   VxgiSample s;
   s.emittance = vec3(0.0);
   s.density = 0.0;
@@ -383,14 +402,13 @@ VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, vec3 r, vec3 apex, vec4
   diameter = c.used;
   vec3 qx, qy, qz;
   float dx, dy, dz, ux, uy, uz;
-  vxgiClipToApex(p, diameter, r, apex, 0, qx, dx);
-  vxgiClipToApex(p, diameter, r, apex, 1, qy, dy);
-  vxgiClipToApex(p, diameter, r, apex, 2, qz, dz);
-  vec4 x = vxgiSlotX(qx, dx, r, apex, surface, ux), y = vxgiSlotY(qy, dy, r, apex, surface, uy),
-       z = vxgiSlotZ(qz, dz, r, apex, surface, uz);
+  vxgiClipToApex(p, diameter, cone, 0, qx, dx);
+  vxgiClipToApex(p, diameter, cone, 1, qy, dy);
+  vxgiClipToApex(p, diameter, cone, 2, qz, dz);
+  vec4 x = vxgiSlotX(qx, dx, cone, ux), y = vxgiSlotY(qy, dy, cone, uy), z = vxgiSlotZ(qz, dz, cone, uz);
   // A slot's density (and emittance, radiance × density) is per its own footprint; the
   // caller counts optical depth per `diameter`. ux..uz ≥ the finest voxel: no division by 0.
-  return vxgiCombine(r, x * (diameter / ux), y * (diameter / uy), z * (diameter / uz));
+  return vxgiCombine(cone.direction, x * (diameter / ux), y * (diameter / uy), z * (diameter / uz));
 }
 #endif  // !VXGI_AO_MODE
 

@@ -102,8 +102,10 @@ ConeTracingResults TraceCone(ConeTracingArguments args) {
   float rise = max(dot(r, n), 0.0);
   float clearance = VXGI_SURFACE_CLEARANCE * max(abs(n.x) + abs(n.y) + abs(n.z), 1.0);
   float surfaceDistance = max(args.surfaceDistance, 0.0);
-  // The plane of the surface the cone leaves (none: n = 0, nothing is moved).
-  vec4 surface = vec4(n, dot(n, args.firstSamplePosition) - surfaceDistance);
+#if !VXGI_AO_MODE
+  // The apex and the surface the cone leaves (n = 0: none), which no sample reads behind.
+  VxgiConeStart start = vxgiConeStart(r, args.firstSamplePosition, n, surfaceDistance);
+#endif
   for (int i = 0; i < VXGI_MAX_STEPS && t < maxDistance && opacity < VXGI_OPAQUE; ++i) {
     float cone = coneFactor * t;  // the cone's diameter here
     float diameter = VXGI_VOXELS_PER_DIAMETER * cone;  // the voxels its sample reads
@@ -117,7 +119,7 @@ ConeTracingResults TraceCone(ConeTracingArguments args) {
     VxgiSample s = vxgiSample(p, diameter, r, valid);
 #else
     // Each facing direction reads only what lies in front of the apex (clip_map.glsl).
-    VxgiSample s = vxgiSampleAhead(p, diameter, r, args.firstSamplePosition, surface, valid);
+    VxgiSample s = vxgiSampleAhead(p, diameter, start, valid);
 #endif
     if (!valid) break;  // left the clip-map: nothing more to gather
     // Steps follow the cone's width even where the footprint is held narrower near the
