@@ -14,6 +14,7 @@ namespace {
 DeviceCeilings someCeilings() {
   DeviceCeilings c;
   c.textureSamplesPerSecond = 200e6;
+  c.scatteredTextureSamplesPerSecond = 40e6;
   c.bufferBytesPerSecond = 8e9;
   c.imageBytesPerSecond = 4e9;
   c.flopsPerSecond = 80e9;
@@ -38,10 +39,12 @@ TEST(WorkReport, RatesAreWorkOverTimeAgainstTheUnitsCeiling) {
   EXPECT_EQ(rates[0].unit, WorkUnit::TextureSamples);
   EXPECT_DOUBLE_EQ(rates[0].perSecond, 1e8);
   EXPECT_DOUBLE_EQ(*rates[0].fraction, 0.5);
-  EXPECT_EQ(rates[1].unit, WorkUnit::Rays);  // no ceiling: a rate only
+  EXPECT_DOUBLE_EQ(*rates[0].scatteredFraction, 2.5);  // 1e8/s against 4e7/s
+  EXPECT_EQ(rates[1].unit, WorkUnit::Rays);            // no ceiling: a rate only
   EXPECT_DOUBLE_EQ(rates[1].perSecond, 5e5);
   EXPECT_FALSE(rates[1].ceiling);
   EXPECT_FALSE(rates[1].fraction);
+  EXPECT_FALSE(rates[1].scatteredFraction);
   EXPECT_TRUE(workRates(someColumn().passes[1], &ceilings).empty());
   EXPECT_FALSE(workRates(someColumn().passes[0], nullptr)[0].fraction);  // --no-ceilings
 }
@@ -51,6 +54,7 @@ TEST(WorkReport, TableNamesEveryPass) {
   const std::string table = workTable(someColumn(), &ceilings);
   EXPECT_NE(table.find("texture samples*"), std::string::npos) << table;
   EXPECT_NE(table.find("50.0%"), std::string::npos) << table;
+  EXPECT_NE(table.find("250.0%"), std::string::npos) << table;  // of the scattered ceiling
   EXPECT_NE(table.find("reported no work: Quiet"), std::string::npos) << table;
 }
 
@@ -74,6 +78,10 @@ TEST(WorkReport, JsonIsWrittenAndParses) {
   EXPECT_DOUBLE_EQ(trace["work"]["textureSamples"]["perFrame"].get<double>(), 1e6);
   EXPECT_DOUBLE_EQ(trace["work"]["textureSamples"]["ceiling"].get<double>(), 200e6);
   EXPECT_DOUBLE_EQ(trace["work"]["textureSamples"]["fraction"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(j["ceilings"]["scatteredTextureSamplesPerSecond"].get<double>(), 40e6);
+  EXPECT_DOUBLE_EQ(trace["work"]["textureSamples"]["scatteredCeiling"].get<double>(), 40e6);
+  EXPECT_DOUBLE_EQ(trace["work"]["textureSamples"]["scatteredFraction"].get<double>(), 2.5);
+  EXPECT_TRUE(trace["work"]["rays"]["scatteredFraction"].is_null());
   EXPECT_TRUE(trace["work"]["textureSamples"]["gpuCounted"].get<bool>());
   EXPECT_TRUE(trace["work"]["rays"]["fraction"].is_null());
   EXPECT_TRUE(run["passes"][1]["work"].empty());

@@ -124,8 +124,10 @@ double imageBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipeli
   return 2.0 * double(kSize) * kSize * kSize * 8.0 / s;
 }
 
+// `scattered`: each invocation marches from its own random place in its own direction
+// (ceiling_trilinear.comp); otherwise neighbours march side by side.
 double trilinearSamplesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines,
-                                 const TimedDispatch& timer, int runs) {
+                                 const TimedDispatch& timer, int runs, bool scattered) {
   constexpr uint32_t kSize = 128, kSteps = 64;
   constexpr uint32_t kGrid[3] = {64, 64, 16};
   gpu::Image volume = makeVolume(device, kSize, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
@@ -141,13 +143,16 @@ double trilinearSamplesPerSecond(const gpu::Device& device, gpu::PipelineCache& 
   struct {
     uint32_t grid[3];
     uint32_t steps;
-  } constants{{kGrid[0], kGrid[1], kGrid[2]}, kSteps};
+    uint32_t scattered;
+  } constants{{kGrid[0], kGrid[1], kGrid[2]}, kSteps, scattered ? 1u : 0u};
   const double s = timer.medianSeconds(
       [&](VkCommandBuffer cmd) {
         vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
         gpu::DescriptorWrites(p)
+            // Repeat: a scattered lane that marches off one side goes on from the other,
+            // rather than reading the clamped edge (cached, so too fast).
             .sampled("volume", volume.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                     device.sampler(gpu::SamplerKind::LinearClamp))
+                     device.sampler(gpu::SamplerKind::LinearRepeat))
             .buffer("Result", result.handle())
             .push(device, cmd);
         push(cmd, p, constants);
@@ -159,6 +164,11 @@ double trilinearSamplesPerSecond(const gpu::Device& device, gpu::PipelineCache& 
 }
 
 }  // namespace
+
+std::optional<double> DeviceCeilings::scatteredPerSecond(WorkUnit unit) const {
+  if (unit == WorkUnit::TextureSamples) return scatteredTextureSamplesPerSecond;
+  return std::nullopt;
+}
 
 std::optional<double> DeviceCeilings::perSecond(WorkUnit unit) const {
   switch (unit) {
@@ -174,6 +184,10 @@ std::optional<double> DeviceCeilings::perSecond(WorkUnit unit) const {
       return std::nullopt;
   }
   return std::nullopt;
+}
+
+std::string DeviceCeilings::describeScattered(WorkUnit unit) {
+  return unit == WorkUnit::TextureSamples ? "trilinear RGBA16F 3D samples/s, scattered lanes" : std::string();
 }
 
 std::string DeviceCeilings::describe(WorkUnit unit) {
@@ -199,7 +213,8 @@ DeviceCeilings measureDeviceCeilings(const gpu::Device& device, gpu::PipelineCac
   c.flopsPerSecond = fmaFlopsPerSecond(device, pipelines, timer, runs);
   c.bufferBytesPerSecond = bufferBytesPerSecond(device, pipelines, timer, runs);
   c.imageBytesPerSecond = imageBytesPerSecond(device, pipelines, timer, runs);
-  c.textureSamplesPerSecond = trilinearSamplesPerSecond(device, pipelines, timer, runs);
+  c.textureSamplesPerSecond = trilinearSamplesPerSecond(device, pipelines, timer, runs, false);
+  c.scatteredTextureSamplesPerSecond = trilinearSamplesPerSecond(device, pipelines, timer, runs, true);
   c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return c;
 }

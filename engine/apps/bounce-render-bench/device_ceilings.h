@@ -1,8 +1,8 @@
 #pragma once
 // What the device can do at most, measured by small compute microbenchmarks in the same
 // run as the passes they are compared with: trilinear RGBA16F 3D-texture samples/s
-// (coherent), storage-buffer and storage-image bandwidth (read + write bytes/s of a copy
-// shader) and the FMA rate. Each is the median of several dispatches after a warm-up.
+// (coherent, and scattered as a cone tracer's lanes are), storage-buffer and storage-image bandwidth (read +
+// write bytes/s of a copy shader) and the FMA rate. Each is the median of several dispatches after a warm-up.
 
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/pass_work.h"
@@ -15,15 +15,23 @@ namespace bounce {
 
 struct DeviceCeilings {
   double textureSamplesPerSecond = 0.0;  ///< trilinear RGBA16F 3D, coherent
-  double bufferBytesPerSecond = 0.0;     ///< storage buffer, read + written
-  double imageBytesPerSecond = 0.0;      ///< RGBA16F 3D storage image, imageLoad + imageStore
-  double flopsPerSecond = 0.0;           ///< FMA chains, two flops each
-  double seconds = 0.0;                  ///< wall time the measurements took
+  /// The same, with every lane marching from its own place in its own direction. On a CPU
+  /// device it is several times lower (every lane's 8 texels are other cache lines and
+  /// pages); texture work is shown against both.
+  double scatteredTextureSamplesPerSecond = 0.0;
+  double bufferBytesPerSecond = 0.0;  ///< storage buffer, read + written
+  double imageBytesPerSecond = 0.0;   ///< RGBA16F 3D storage image, imageLoad + imageStore
+  double flopsPerSecond = 0.0;        ///< FMA chains, two flops each
+  double seconds = 0.0;               ///< wall time the measurements took
 
   /// The ceiling work in `unit` is compared with (none for rays).
   std::optional<double> perSecond(WorkUnit unit) const;
+  /// The scattered ceiling of `unit`, where there is one (texture samples).
+  std::optional<double> scatteredPerSecond(WorkUnit unit) const;
   /// What the ceiling of `unit` measured, for tables ("trilinear RGBA16F 3D samples/s").
   static std::string describe(WorkUnit unit);
+  /// What the scattered ceiling of `unit` measured (empty where there is none).
+  static std::string describeScattered(WorkUnit unit);
 };
 
 /// Runs the microbenchmarks (a second or two on lavapipe). `runs` dispatches each after a

@@ -12,16 +12,15 @@
 // NAME.L* row (--per-level shows each).
 //
 // Against the device's limits: before the frames it measures the device's ceilings with
-// compute microbenchmarks (device_ceilings.h: trilinear RGBA16F 3D samples/s, storage
-// buffer and storage image bytes/s, FMA flops/s; about a second; --no-ceilings skips
-// them). After the timed frames of each size and variant it renders one more, untimed
-// frame with work counting on (shaders' countWork calls compile in and count; the atomics
-// would distort the times). Each pass's work is what it reported while recording
-// (PassContext::addWork, median over the timed frames that ran it) plus what its shaders
-// counted (only if it ran in the counted frame: an incremental pass that had nothing to do
-// then shows its recorded work alone); a second table per size and variant gives, per pass
-// and unit, the work per frame, the rate its median time gives, the ceiling for that unit
-// and the fraction of it reached.
+// compute microbenchmarks (device_ceilings.h: trilinear RGBA16F 3D samples/s, coherent
+// and with scattered lanes; storage buffer and storage image bytes/s; FMA flops/s; about
+// a second; --no-ceilings skips them). After the timed frames of each size and variant it renders one more,
+// untimed frame with work counting on (shaders' countWork calls compile in and count; the atomics would
+// distort the times). Each pass's work is what it reported while recording (PassContext::addWork, median over
+// the timed frames that ran it) plus what its shaders counted (only if it ran in the counted frame: an
+// incremental pass that had nothing to do then shows its recorded work alone); a second table per size and
+// variant gives, per pass and unit, the work per frame, the rate its median time gives, the ceiling for that
+// unit and the fraction of it reached.
 // `--json FILE` writes the ceilings and, per size and variant, each pass's ms, work,
 // ceiling and fraction.
 

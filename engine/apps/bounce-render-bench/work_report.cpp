@@ -23,6 +23,10 @@ std::string si(double value) {
   return fmt::format("{:.3g} {}", value, kPrefixes[p]);
 }
 
+std::string percent(const std::optional<double>& fraction) {
+  return fraction ? fmt::format("{:.1f}%", 100.0 * *fraction) : "-";
+}
+
 std::string jsonKey(WorkUnit unit) {
   static constexpr const char* kKeys[] = {"bufferBytes", "imageBytes", "textureSamples", "flops", "rays"};
   return kKeys[size_t(unit)];
@@ -38,6 +42,9 @@ std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* 
     if (pass.milliseconds > 0.0) r.perSecond = pass.work[u] / (pass.milliseconds * 1e-3);
     if (ceilings) r.ceiling = ceilings->perSecond(r.unit);
     if (r.ceiling && *r.ceiling > 0.0 && pass.milliseconds > 0.0) r.fraction = r.perSecond / *r.ceiling;
+    if (ceilings) r.scatteredCeiling = ceilings->scatteredPerSecond(r.unit);
+    if (r.scatteredCeiling && *r.scatteredCeiling > 0.0 && pass.milliseconds > 0.0)
+      r.scatteredFraction = r.perSecond / *r.scatteredCeiling;
     rates.push_back(r);
   }
   return rates;
@@ -46,29 +53,35 @@ std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* 
 std::string ceilingsTable(const DeviceCeilings& c) {
   std::string out = fmt::format("| {:<54} | {:>14} |\n|{:-<56}|{:->15}:|\n",
                                 "device ceiling (median of runs)", "per second", "", "");
-  for (WorkUnit u : {WorkUnit::TextureSamples, WorkUnit::BufferBytes, WorkUnit::ImageBytes, WorkUnit::Flops})
+  for (WorkUnit u :
+       {WorkUnit::TextureSamples, WorkUnit::BufferBytes, WorkUnit::ImageBytes, WorkUnit::Flops}) {
     out += fmt::format("| {:<54} | {:>14} |\n", DeviceCeilings::describe(u), si(*c.perSecond(u)));
+    if (const auto scattered = c.scatteredPerSecond(u))
+      out += fmt::format("| {:<54} | {:>14} |\n", DeviceCeilings::describeScattered(u), si(*scattered));
+  }
   return out;
 }
 
 std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilings) {
-  std::string out = fmt::format("| {:<26} | {:<16} | {:>12} | {:>10} | {:>12} | {:>12} | {:>8} |\n", "pass",
-                                "work", "per frame", "ms", "per second", "ceiling", "fraction");
+  std::string out =
+      fmt::format("| {:<26} | {:<16} | {:>12} | {:>10} | {:>12} | {:>12} | {:>8} | {:>9} |\n", "pass", "work",
+                  "per frame", "ms", "per second", "ceiling", "fraction", "scattered");
   out +=
-      "|----------------------------|------------------|-------------:|-----------:|-------------:|----------"
-      "-"
-      "--:|---------:|\n";
+      "|----------------------------|------------------|-------------:|-----------:|-------------:|"
+      "-------------:|---------:|----------:|\n";
   std::vector<std::string> silent;
   for (const MeasuredPass& pass : column.passes) {
     const std::vector<WorkRate> rates = workRates(pass, ceilings);
     if (rates.empty()) silent.push_back(pass.name);
     for (const WorkRate& r : rates)
-      out += fmt::format("| {:<26} | {:<16} | {:>12} | {:>10.3f} | {:>12} | {:>12} | {:>8} |\n", pass.name,
+      out += fmt::format("| {:<26} | {:<16} | {:>12} | {:>10.3f} | {:>12} | {:>12} | {:>8} | {:>9} |\n",
+                         pass.name,
                          std::string(workUnitName(r.unit)) + (pass.gpuCounted[size_t(r.unit)] ? "*" : ""),
                          si(r.amount), pass.milliseconds, si(r.perSecond), r.ceiling ? si(*r.ceiling) : "-",
-                         r.fraction ? fmt::format("{:.1f}%", 100.0 * *r.fraction) : "-");
+                         percent(r.fraction), percent(r.scatteredFraction));
   }
   out += "* includes what the pass's shaders counted (bounce/work_counters.glsl) in an untimed frame\n";
+  out += "scattered: texture samples against the scattered-lanes ceiling (a cone tracer's access pattern)\n";
   if (!silent.empty()) {
     out += "reported no work:";
     for (const std::string& s : silent) out += " " + s;
@@ -87,6 +100,7 @@ nlohmann::json benchJson(const std::string& device, const std::string& scene, co
   j["timedFrames"] = timedFrames;
   if (ceilings) {
     j["ceilings"] = {{"textureSamplesPerSecond", ceilings->textureSamplesPerSecond},
+                     {"scatteredTextureSamplesPerSecond", ceilings->scatteredTextureSamplesPerSecond},
                      {"bufferBytesPerSecond", ceilings->bufferBytesPerSecond},
                      {"imageBytesPerSecond", ceilings->imageBytesPerSecond},
                      {"flopsPerSecond", ceilings->flopsPerSecond},
@@ -107,6 +121,10 @@ nlohmann::json benchJson(const std::string& device, const std::string& scene, co
             {"perSecond", r.perSecond},
             {"ceiling", r.ceiling ? nlohmann::json(*r.ceiling) : nlohmann::json(nullptr)},
             {"fraction", r.fraction ? nlohmann::json(*r.fraction) : nlohmann::json(nullptr)},
+            {"scatteredCeiling",
+             r.scatteredCeiling ? nlohmann::json(*r.scatteredCeiling) : nlohmann::json(nullptr)},
+            {"scatteredFraction",
+             r.scatteredFraction ? nlohmann::json(*r.scatteredFraction) : nlohmann::json(nullptr)},
             {"gpuCounted", p.gpuCounted[size_t(r.unit)]}};
       }
       run["passes"].push_back(std::move(pass));

@@ -33,17 +33,20 @@ struct MeasuredColumn {
 /// One unit of one pass against its ceiling.
 struct WorkRate {
   WorkUnit unit;
-  double amount = 0.0;             ///< per frame
-  double perSecond = 0.0;          ///< amount / GPU time (0 when the time is 0)
-  std::optional<double> ceiling;   ///< per second; none for rays or without ceilings
-  std::optional<double> fraction;  ///< perSecond / ceiling
+  double amount = 0.0;                      ///< per frame
+  double perSecond = 0.0;                   ///< amount / GPU time (0 when the time is 0)
+  std::optional<double> ceiling;            ///< per second; none for rays or without ceilings
+  std::optional<double> scatteredCeiling;   ///< texture samples: the scattered ceiling
+  std::optional<double> fraction;           ///< perSecond / ceiling
+  std::optional<double> scatteredFraction;  ///< perSecond / scatteredCeiling
 };
 /// The units `pass` did work in, in WorkUnit order.
 std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* ceilings);
 
-/// "| ceiling | measured |" rows for the four ceilings.
+/// "| ceiling | measured |" rows for the five ceilings.
 std::string ceilingsTable(const DeviceCeilings& ceilings);
-/// A row per pass and unit of work: work per frame, ms, rate, ceiling, fraction. Passes
+/// A row per pass and unit of work: work per frame, ms, rate, ceiling, fraction (and of
+/// the scattered ceiling, for texture samples). Passes
 /// that reported no work are listed at the end by name.
 std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilings);
 
