@@ -1,7 +1,9 @@
-// Sunlit rooms against the one-bounce path tracer (issue 16): closed rooms lit only by the
-// sun through a window. The outer faces of the walls and the roof are lit some 90 times
-// brighter than anything inside, so a little of their emittance reaching the room's cones
-// outweighs the room's own one bounce.
+// Sunlit rooms against the path tracer (issue 16): closed rooms lit only by the sun through
+// a window. The outer faces of the walls and the roof are lit some 90 times brighter than
+// anything inside, so a little of their emittance reaching the room's cones outweighs the
+// room's own one bounce. Each wall is held to the path tracer's one bounce (what VXGI
+// computes, within the bounds each test gives) and to its every bounce (an upper bound for
+// any one-bounce method: no wall may exceed it).
 
 #include "vxgi_test_support.h"
 
@@ -38,9 +40,11 @@ int wallOf(const ImageBuffer& normal, uint32_t x, uint32_t y) {
 }
 
 struct WallLight {
-  std::array<double, 6> vxgi{}, reference{};  // mean indirect irradiance (rgb mean), W/m²
+  // Mean indirect irradiance (rgb mean), W/m²: VXGI's, the path tracer's one bounce
+  // (reference) and its every bounce (allBounces).
+  std::array<double, 6> vxgi{}, reference{}, allBounces{};
   std::array<uint32_t, 6> pixels{};
-  double vxgiAll = 0, referenceAll = 0;  // over every surface pixel
+  double vxgiAll = 0, referenceAll = 0, allBouncesAll = 0;  // over every surface pixel
   double ratio(int wall) const { return vxgi[wall] / std::max(reference[wall], 1e-9); }
 };
 
@@ -50,7 +54,7 @@ class VxgiSunlitRoom : public RenderFixture {
 };
 
 // 2048 paths per pixel: over each wall's region (60..1500 pixels of the 64² view) two
-// seeds of the reference differ by at most 1.1% (measured on the 10 cm room).
+// seeds of the one-bounce reference differ by at most 1.1% (measured on the 10 cm room).
 WallLight VxgiSunlitRoom::measure(const std::string& scene, const std::vector<std::string>& sets) {
   VxgiSunlitRoom& t = *this;
   WallLight w;
@@ -60,43 +64,74 @@ WallLight VxgiSunlitRoom::measure(const std::string& scene, const std::vector<st
        {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 2048", "r.GI.Technique Reference"})
     t.engine->console().execute(line);
   RenderedFrame reference = t.render(64, 64, {"indirect-irradiance", "normal"});
+  // Every bounce, at 512 paths per pixel: its bound below has a margin of a third or more.
+  t.engine->console().execute("r.Reference.MaxBounces -1");
+  t.engine->console().execute("r.Reference.SamplesPerPixel 512");
+  RenderedFrame allBounces = t.render(64, 64, {"indirect-irradiance"});
   const ImageBuffer &a = vxgi.images.at("indirect-irradiance"),
-                    &b = reference.images.at("indirect-irradiance"), &n = reference.images.at("normal");
+                    &b = reference.images.at("indirect-irradiance"), &n = reference.images.at("normal"),
+                    &c = allBounces.images.at("indirect-irradiance");
   EXPECT_TRUE(allFinite(a));
   uint32_t all = 0;
+  auto rgbMean = [](const ImageBuffer& image, uint32_t x, uint32_t y) {
+    return (image.at(x, y, 0) + image.at(x, y, 1) + image.at(x, y, 2)) / 3.0;
+  };
   for (uint32_t y = 0; y < a.height; ++y)
     for (uint32_t x = 0; x < a.width; ++x) {
       const int wall = wallOf(n, x, y);
       if (wall < 0) continue;
-      const double va = (a.at(x, y, 0) + a.at(x, y, 1) + a.at(x, y, 2)) / 3.0;
-      const double vb = (b.at(x, y, 0) + b.at(x, y, 1) + b.at(x, y, 2)) / 3.0;
+      const double va = rgbMean(a, x, y), vb = rgbMean(b, x, y), vc = rgbMean(c, x, y);
       w.vxgi[wall] += va;
       w.reference[wall] += vb;
+      w.allBounces[wall] += vc;
       ++w.pixels[wall];
       w.vxgiAll += va;
       w.referenceAll += vb;
+      w.allBouncesAll += vc;
       ++all;
     }
   for (int i = 0; i < 6; ++i) {
     w.vxgi[i] /= std::max(w.pixels[i], 1u);
     w.reference[i] /= std::max(w.pixels[i], 1u);
+    w.allBounces[i] /= std::max(w.pixels[i], 1u);
   }
   w.vxgiAll /= std::max(all, 1u);
   w.referenceAll /= std::max(all, 1u);
+  w.allBouncesAll /= std::max(all, 1u);
   std::printf("%s:", scene.c_str());
   for (const std::string& s : sets) std::printf(" %s", s.c_str());
-  std::printf("\n  interior: VXGI / one-bounce reference = %.3f\n",
-              w.vxgiAll / std::max(w.referenceAll, 1e-9));
-  // The floor reads 0 in the reference: it cannot see the sun patch it holds, and the only
-  // other sunlit surface inside, the sill, faces up too; its light is the second bounce on.
+  std::printf("\n  interior: VXGI / one-bounce reference = %.3f, / all bounces = %.3f\n",
+              w.vxgiAll / std::max(w.referenceAll, 1e-9), w.vxgiAll / std::max(w.allBouncesAll, 1e-9));
+  // The floor reads 0 in the one-bounce reference: it cannot see the sun patch it holds, and
+  // the only other sunlit surface inside, the sill, faces up too; its light is the second
+  // bounce on.
   for (int i = 0; i < 6; ++i)
     if (w.pixels[i] > 0) {
       const std::string ratio = w.reference[i] > 1e-4 ? fmt::format("{:.3f}", w.ratio(i)) : "-";
-      std::printf("  %s (%u px): VXGI %.4f, reference %.4f W/m², ratio %s\n", kWalls[i], w.pixels[i],
-                  w.vxgi[i], w.reference[i], ratio.c_str());
+      std::printf(
+          "  %s (%u px): VXGI %.4f, reference %.4f W/m², ratio %s; all bounces %.4f W/m², ratio %.3f\n",
+          kWalls[i], w.pixels[i], w.vxgi[i], w.reference[i], ratio.c_str(), w.allBounces[i],
+          w.vxgi[i] / std::max(w.allBounces[i], 1e-9));
     }
   t.finish();
   return w;
+}
+
+// VXGI gathers one bounce of the light, so on no wall may it exceed what the path tracer
+// finds with every bounce: light a one-bounce method shows beyond that did not reach the
+// wall through the room. The full light is 3.0–3.4 times the one bounce on these walls and
+// 1.9–2.1 times on the ceiling (albedo 0.6), and the floor, which holds the sun patch, has
+// no one bounce at all, so this bound is looser than the one-bounce ratios and holds
+// whatever the cones' pattern. Measured: at most 0.67 (the 20 cm room's right wall at 64³),
+// a margin far above the reference's noise. Before the coarser fetch stayed in front of the
+// apex (clip_map.glsl, vxgiCoarsePosition) the 10 cm room's window wall read 1.6 times
+// the full light at the defaults.
+void expectNoWallAboveAllBounces(const WallLight& w, const std::string& scene) {
+  for (int i = 0; i < 6; ++i)
+    if (w.pixels[i] > 0)
+      EXPECT_LT(w.vxgi[i], w.allBounces[i])
+          << scene << ", " << kWalls[i] << ": VXGI's one bounce " << w.vxgi[i]
+          << " W/m² above the path tracer's every bounce " << w.allBounces[i];
 }
 
 double brightestWall(const WallLight& w) {
@@ -126,8 +161,8 @@ TEST_F(VxgiSunlitRoom, SunlitOuterFacesDoNotFloodTheRoom) {
   // the 8 cones are not mirror images on the two walls; with 32 they agreed, 0.91–1.22).
   // Bounds: the measured values plus 10–25% (the reference's noise is ~2%): window wall
   // below 1.4, view below 1.5, every wall below 2.4; each fails the code before 6bc1895.
-  //
-  // Not met yet: no wall brighter than the reference.
+  // Against every bounce of the path tracer no wall is brighter (expectNoWallAboveAllBounces):
+  // measured 0.23–0.67. Against its one bounce the side walls still differ (above).
   struct Case {
     const char* scene;
     double windowWall, view, brightest;  // measured ratios to the reference
@@ -143,6 +178,7 @@ TEST_F(VxgiSunlitRoom, SunlitOuterFacesDoNotFloodTheRoom) {
     // The light that is there comes from the sun patch: the window wall sees it at least
     // nearly as brightly as the reference (a fix that just darkened everything would fail here).
     EXPECT_GT(w.ratio(5), 0.8) << c.scene;
+    expectNoWallAboveAllBounces(w, c.scene);
   }
 }
 
@@ -161,7 +197,9 @@ TEST_F(VxgiSunlitRoom, DefaultSettingsKeepTheOuterFacesOut) {
   // (clip_map.glsl, vxgiCoarsePosition): view 1.19 and 1.15, window wall 1.00 and 1.03,
   // brightest wall 1.73 and 1.58 (the right one again).
   // Bounds: the measured values plus about 25%: view below 1.5, every wall below 2.2, the
-  // window wall within [0.8, 1.3]. The code before fails the view and window wall bounds.
+  // window wall within [0.8, 1.3]. The code before fails the view and window wall bounds,
+  // and the 10 cm room's window wall is then above every bounce of the path tracer (1.63×);
+  // now every wall is at most 0.66 of it.
   struct Case {
     const char* scene;
     double view, windowWall, brightest;
@@ -173,6 +211,7 @@ TEST_F(VxgiSunlitRoom, DefaultSettingsKeepTheOuterFacesOut) {
     EXPECT_LT(brightestWall(w), 2.2) << c.scene << " (measured " << c.brightest << ")";
     EXPECT_LT(w.ratio(5), 1.3) << c.scene << " (measured " << c.windowWall << ")";
     EXPECT_GT(w.ratio(5), 0.8) << c.scene;
+    expectNoWallAboveAllBounces(w, c.scene);
   }
 }
 
