@@ -79,6 +79,12 @@ SUNLIT_THIN_WALL_THICKNESS = 0.1   # m: thinner than the coarse voxels the leak 
 SUNLIT_WINDOW_OFFSET = 1.0         # m along +x: the opening 0.4 m from the +x wall
 SUNLIT_BACK_CAMERA_TILT_DEGREES = -20.0
 TINY_SCENE_SIZE = 0.1              # m, a floor tile with a 4 cm box: inside one 1 m voxel
+LIT_FLOOR_SIZE = 30.0              # m, square slab, top at y = 0; the wall across its middle
+LIT_FLOOR_WALL_HEIGHT = 8.0        # m, wall 30 m wide and 0.2 m thick, front face at z = 0.1
+LIT_FLOOR_ALBEDO = 0.5
+LIT_FLOOR_IRRADIANCE = 10.0        # W/m^2: sun straight down, so the wall gets none directly
+LIT_FLOOR_CAMERA = (0.0, 1.5, 5.0)  # m, facing the wall (-z)
+LIT_FLOOR_CAMERA_YFOV = 1.0        # rad
 
 # --- glTF constants ---------------------------------------------------------------------
 
@@ -453,6 +459,20 @@ def tiny_scene():
     return s
 
 
+def lit_floor_and_wall():
+    """A sunlit floor and a wall standing on it that the sun does not reach: the wall's one
+    bounce is the floor's radiance times the floor's view factor, an integral with a closed
+    form along the wall (vxgi_render_test.cpp)."""
+    s = GltfScene("30 m floor lit straight from above, an unlit 8 m wall across it")
+    gray = s.material("Gray", (LIT_FLOOR_ALBEDO,) * 3, extras=VOXELIZE_FLAG)
+    f, h = LIT_FLOOR_SIZE, LIT_FLOOR_WALL_HEIGHT
+    s.object("Floor", Geometry().box((f, 0.2, f)), gray, (0, -0.1, 0))
+    s.object("Wall", Geometry().box((f, h, 0.2)), gray, (0, h / 2, 0))
+    s.light("Sun", "directional", LIT_FLOOR_IRRADIANCE, (0, 10, 5), LOOK_DOWN, extras=INDIRECT_LIGHT_FLAG)
+    s.camera("Main", LIT_FLOOR_CAMERA, None, LIT_FLOOR_CAMERA_YFOV)
+    return s
+
+
 def x_rotation(degrees):
     """A glTF quaternion [x, y, z, w] turning by `degrees` about +x (negative tilts -z down)."""
     half = math.radians(degrees) / 2
@@ -536,6 +556,7 @@ def main():
     sunlit_room(SUNLIT_THIN_WALL_THICKNESS).write(os.path.join(tests, "sunlit_room_10cm.gltf"))
     sunlit_room(SUNLIT_THIN_WALL_THICKNESS, window_x=SUNLIT_WINDOW_OFFSET, look_at_window=True).write(
         os.path.join(tests, "sunlit_room_10cm_offset_window.gltf"))
+    lit_floor_and_wall().write(os.path.join(tests, "lit_floor_and_wall.gltf"))
 
 
 if __name__ == "__main__":
