@@ -285,7 +285,9 @@ void VxgiSettings::declare(PluginContext& ctx) {
   thickness = ctx.addMaterialParameter<float>(
       {.name = "VxgiVoxelizationThickness",
        .displayName = "Vxgi voxelization thickness",
-       .help = "Voxels of opacity a surface fills behind itself (1: just the surface).",
+       .help = "Voxels of opacity a surface fills behind itself (1: just the surface). For single-layer "
+               "geometry: on a closed mesh thinner than the fill, its far face's fill reaches in front of "
+               "its near face and blocks the light leaving it.",
        .defaultValue = 1.0f,
        .min = 1.0,
        .max = 4.0,
