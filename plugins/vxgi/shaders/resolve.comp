@@ -9,6 +9,9 @@
 // or frame without clearing the whole volume (25 MB per level at 64³, 201 MB at 128³):
 // every voxel a fragment added to lies in a brick or box this pass resolves.
 //
+// Air over air is not stored again (VxgiVoxelStored): on lavapipe each storage-image
+// store costs per texel, and most voxels of the bricks a re-voxelization lists are air.
+//
 // VXGI_RESOLVE_BRICK_LIST 1 (a level resolved whole): one workgroup per brick of the list
 // brick_list.comp made, by indirect dispatch, so the air that is already stored as zeros is
 // never dispatched. 0: every voxel of the box (boxes of a partial re-voxelization).
@@ -31,6 +34,8 @@ layout(push_constant) uniform Push {
 } pc;
 
 layout(binding = 21, r32f) uniform image3D scratch;
+layout(std430, binding = 61) readonly buffer VxgiBrickFlags { uint brickFlags[]; };
+layout(std430, binding = 64) buffer VxgiVoxelStored { uint voxelStored[]; };
 #if VXGI_RESOLVE_BRICK_LIST
 layout(std430, binding = 63) readonly buffer VxgiBrickList {
   uint listedBricks;
@@ -100,6 +105,31 @@ void resolveVoxel(ivec3 t, int level) {
 #endif
     density[d] = vxgiDensityFromOpacity(saturate(isnan(w) ? 0.0 : w));
     emittance[d] *= density[d];
+  }
+  // Air over air is not stored again (vxgi/scratch.glsl, VxgiVoxelStored): the texels are
+  // stored when anything is non-zero now, or was when the resolve last stored them, or
+  // downsampling may have stored something there that nothing else will overwrite.
+  // Emittance is radiance × density, so a voxel with no density anywhere is all zeros.
+  bool occupied = false;
+  for (int d = 0; d < VXGI_DIRECTIONS; ++d) occupied = occupied || density[d] > 0.0;
+  int word = vxgiVoxelStoredWord(level, t);
+  uint bit = vxgiVoxelStoredBit(t);
+  bool wasStored = (voxelStored[word] & bit) != 0u;
+  // downsample.comp flags the bricks it stored something in. Inside the inner box (the
+  // finer level's extent, toroidally: its origin halved, mapSize / 2 wide) this frame's
+  // downsample, which always follows the resolve, rewrites every voxel of such a brick;
+  // outside it (the box has moved on) only the resolve can clear what it left.
+  int n = clipMap.mapSize;
+  bool inner = level > 0 && all(lessThan((t - (clipMap.levelOrigin[max(level - 1, 0)].xyz >> 1)) & (n - 1),
+                                         ivec3(n >> 1)));
+  bool downsampled =
+      (brickFlags[level * vxgiBricksPerLevel() + vxgiBrickIndex(t)] & VXGI_BRICK_DOWNSAMPLED) != 0u;
+  countWork(WORK_BUFFER_BYTES, occupied != wasStored ? 16u : 8u);  // the two words read, one updated
+  if (occupied && !wasStored) atomicOr(voxelStored[word], bit);
+  if (!occupied && wasStored) atomicAnd(voxelStored[word], ~bit);
+  if (!occupied && !wasStored && (!downsampled || inner)) {
+    countWork(WORK_IMAGE_BYTES, bytes);
+    return;
   }
   // Stored texels: one per direction (or per texture without emittance); the guard
   // copies are the VXGI.ClipGuards pass's.

@@ -71,6 +71,8 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
   const uint64_t bricks = uint64_t(format.mapSize / kBrickVoxels);
   brickFlags_ = std::make_unique<PersistentBuffer>(
       "VXGI.BrickFlags", BufferDesc{bricks * bricks * bricks * format.stackLevels * sizeof(uint32_t)});
+  voxelStored_ = std::make_unique<PersistentBuffer>(
+      "VXGI.VoxelStored", BufferDesc{bricks * bricks * bricks * format.stackLevels * 2u * sizeof(uint32_t)});
   scratch_ = std::make_unique<PersistentTexture>("VXGI.Scratch", ScratchLayout::of(format).desc(format));
   scratchClean_ = false;
   return true;
@@ -82,8 +84,9 @@ ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
   for (auto& t : mips_) h.mips.push_back(graph.importTexture(*t));
   // The executor allocates on first use, contents undefined (and so are the textures'):
   // this frame voxelizes everything, and must first mark every brick as possibly non-zero.
-  h.brickFlagsUndefined = brickFlags_->allocation() == nullptr;
+  h.brickFlagsUndefined = brickFlags_->allocation() == nullptr || voxelStored_->allocation() == nullptr;
   h.brickFlags = graph.importBuffer(*brickFlags_);
+  h.voxelStored = graph.importBuffer(*voxelStored_);
   h.scratchUndefined = scratch_->allocation() == nullptr || !scratchClean_;
   h.scratch = graph.importTexture(*scratch_);
   return h;

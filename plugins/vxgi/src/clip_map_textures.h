@@ -25,8 +25,12 @@ struct ClipMapHandles {
   /// are known to be zero, so a re-voxelization need not resolve it while it stays empty
   /// (vxgi/scratch.glsl, VxgiBrickFlags).
   BufferHandle brickFlags;
-  /// True when brickFlags' contents are undefined (just created): the first voxelization
-  /// sets every flag, so every brick is resolved once.
+  /// Per voxel of every clipped level, one bit (64 per brick, two words): 0 when the last
+  /// texels the resolve stored for it were all zero, so storing air there again can be
+  /// skipped (vxgi/scratch.glsl, VxgiVoxelStored).
+  BufferHandle voxelStored;
+  /// True when brickFlags' and voxelStored's contents are undefined (just created): the
+  /// first voxelization sets every flag and bit, so every voxel is resolved once.
   bool brickFlagsUndefined = false;
   /// The voxelization's float sums (ScratchLayout), persistent and all zeros between
   /// voxelizations: each resolve zeroes the sums it read, so no level clears the volume.
@@ -76,6 +80,7 @@ class ClipMapTextures {
   bool configured_ = false;
   std::vector<std::unique_ptr<PersistentTexture>> clip_, mips_;
   std::unique_ptr<PersistentBuffer> brickFlags_;
+  std::unique_ptr<PersistentBuffer> voxelStored_;
   std::unique_ptr<PersistentTexture> scratch_;
   bool scratchClean_ = false;
 };

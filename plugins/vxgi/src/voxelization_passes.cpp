@@ -130,19 +130,26 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     // Brick flags just allocated hold anything: mark every brick as possibly non-zero, so
     // this first voxelization resolves (and clears) the whole clip-map.
     const bool fillFlags = handles.brickFlagsUndefined;
-    if (fillFlags) handles.brickFlags = b.write(handles.brickFlags, Access::TransferDst);
+    if (fillFlags) {
+      handles.brickFlags = b.write(handles.brickFlags, Access::TransferDst);
+      handles.voxelStored = b.write(handles.voxelStored, Access::TransferDst);
+    }
     // The scratch sums are zeros between voxelizations (each resolve zeroes what it read)
     // once they have been zeroed: here, when just allocated or after a frame that did not
     // get as far as its resolves.
     const bool clearScratch = handles.scratchUndefined;
     if (clearScratch) handles.scratch = b.write(handles.scratch, Access::TransferDst);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
-    BufferHandle mb = materialBuffer, lb = lightBuffer, flags = handles.brickFlags;
+    BufferHandle mb = materialBuffer, lb = lightBuffer, flags = handles.brickFlags,
+                 stored = handles.voxelStored;
     TextureHandle sums = handles.scratch;
     return [=](PassContext& ctx) {
       ctx.upload(mb, materialParams.data(), materialParams.size() * sizeof(glm::vec4));
       ctx.upload(lb, lightFlags.data(), lightFlags.size() * sizeof(uint32_t));
-      if (fillFlags) vkCmdFillBuffer(ctx.cmd(), ctx.buffer(flags).handle(), 0, VK_WHOLE_SIZE, 1u);
+      if (fillFlags) {
+        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(flags).handle(), 0, VK_WHOLE_SIZE, 1u);
+        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(stored).handle(), 0, VK_WHOLE_SIZE, ~0u);
+      }
       if (clearScratch) {
         VkClearColorValue zero{};
         VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
@@ -364,6 +371,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         arguments = b.read(resolveArguments, Access::Indirect);
         list = b.read(brickList, Access::StorageRead);
       }
+      // The downsampled bit says where air must be stored over what downsampling left.
+      BufferHandle flags = b.read(handles.brickFlags, Access::StorageRead);
+      handles.voxelStored = b.write(handles.voxelStored, Access::StorageReadWrite);
       writeAll(b, handles.clip);
       b.condition(decide);
       const ClipMapHandles h = handles;
@@ -371,7 +381,10 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(
             shader(shaders, "resolve.comp", format, "VXGI_RESOLVE_BRICK_LIST", wholeLevel ? 1 : 0));
         gpu::Bindings bind;
-        bind.buffer("clipMap", constants).storage("scratch", sums);
+        bind.buffer("clipMap", constants)
+            .storage("scratch", sums)
+            .buffer("VxgiBrickFlags", flags)
+            .buffer("VxgiVoxelStored", h.voxelStored);
         bindStorage(bind, "voxelsOut", h.clip);
         const glm::ivec4 scratchPush(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0);
         if (wholeLevel) {

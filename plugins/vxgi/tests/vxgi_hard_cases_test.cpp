@@ -386,11 +386,11 @@ TEST_F(VxgiHardCases, MovedThickObjectReVoxelizesItsWiderRegion) {
 TEST_F(VxgiHardCases, FullReVoxelizationSkipsAirYetClearsWhereAnObjectLeft) {
   const std::vector<std::string> settings = with(kSmall, {"r.VXGI.ForceFullVoxelization=1"});
   const glm::mat4 shift = glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, -0.3f, 0.4f));
-  auto moveEmitter = [&] {
+  auto moveEmitter = [&](const glm::mat4& by) {
     const auto& instances = engine->scene()->instances();
     for (uint32_t i = 0; i < instances.size(); ++i)
       if (instances[i].name == "Emitter") {
-        engine->scene()->setInstanceTransform(i, shift * instances[i].world);
+        engine->scene()->setInstanceTransform(i, by * instances[i].world);
         return true;
       }
     return false;
@@ -399,12 +399,16 @@ TEST_F(VxgiHardCases, FullReVoxelizationSkipsAirYetClearsWhereAnObjectLeft) {
   start("content/tests/small_emitter.gltf", settings, "VXGI");
   const ImageBuffer first = irradiance();
   const ImageBuffer second = irradiance();  // flags known: air skipped
-  ASSERT_TRUE(moveEmitter()) << "no Emitter instance";
+  ASSERT_TRUE(moveEmitter(shift)) << "no Emitter instance";
   const ImageBuffer moved = irradiance();       // the old bricks are cleared
   const ImageBuffer movedAgain = irradiance();  // and skipped from now on
+  // Back where it started: the voxels it filled only after the first frame (whose texels
+  // the resolve learned were air, then stored non-zero) must be cleared in their turn.
+  ASSERT_TRUE(moveEmitter(glm::inverse(shift)));
+  const ImageBuffer back = irradiance();
   finish();
   start("content/tests/small_emitter.gltf", settings, "VXGI");
-  ASSERT_TRUE(moveEmitter());
+  ASSERT_TRUE(moveEmitter(shift));
   const ImageBuffer fresh = irradiance();
   finish();
 
@@ -418,15 +422,16 @@ TEST_F(VxgiHardCases, FullReVoxelizationSkipsAirYetClearsWhereAnObjectLeft) {
   };
   const double change = largestDifference(first, fresh);
   std::printf(
-      "full re-voxelization: unmoved frames differ by %.6f, moved by %.6f and %.6f from a fresh start "
-      "(the move changed up to %.3f W/m²)\n",
+      "full re-voxelization: unmoved frames differ by %.6f, moved by %.6f and %.6f from a fresh start, "
+      "moved back by %.6f from the first frame (the move changed up to %.3f W/m²)\n",
       largestDifference(first, second), largestDifference(moved, fresh), largestDifference(movedAgain, fresh),
-      change);
+      largestDifference(back, first), change);
   EXPECT_GT(change, 0.1) << "the move must change the image for the comparison to mean anything";
   // Float atomics add in a different order: allow a rounding-level difference.
   EXPECT_LT(largestDifference(first, second), 1e-3 * change);
   EXPECT_LT(largestDifference(moved, fresh), 1e-3 * change);
   EXPECT_LT(largestDifference(movedAgain, fresh), 1e-3 * change);
+  EXPECT_LT(largestDifference(back, first), 1e-3 * change);
 }
 
 }  // namespace

@@ -31,4 +31,14 @@ int vxgiBrickIndex(ivec3 t) {
   return (b.z * n + b.y) * n + b.x;
 }
 
+// VxgiVoxelStored: one bit per voxel, 64 per brick in two words, set while the texels the
+// resolve last stored for the voxel may be non-zero. Air over air (the bit clear, and no
+// downsampled content in the brick) need not be stored again: most voxels of the bricks a
+// re-voxelization lists are air, and on lavapipe a storage-image store costs per texel.
+int vxgiVoxelStoredWord(int level, ivec3 t) {
+  int voxel = ((t.z & 3) << 4) | ((t.y & 3) << 2) | (t.x & 3);
+  return (level * vxgiBricksPerLevel() + vxgiBrickIndex(t)) * 2 + (voxel >> 5);
+}
+uint vxgiVoxelStoredBit(ivec3 t) { return 1u << (((t.z & 1) << 4) | ((t.y & 3) << 2) | (t.x & 3)); }
+
 #endif
