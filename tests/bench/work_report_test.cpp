@@ -17,6 +17,7 @@ DeviceCeilings someCeilings() {
   c.scatteredTextureSamplesPerSecond = 40e6;
   c.bufferBytesPerSecond = 8e9;
   c.imageBytesPerSecond = 4e9;
+  c.transferBytesPerSecond = 16e9;
   c.flopsPerSecond = 80e9;
   return c;
 }
@@ -29,6 +30,10 @@ MeasuredColumn someColumn() {
   trace.work[size_t(WorkUnit::Rays)] = 5000;
   c.passes.push_back(trace);
   c.passes.push_back({"Quiet", 1.0, {}, {}});
+  MeasuredPass copy{"Copy", 2.0, {}, {}};
+  copy.work[size_t(WorkUnit::TransferBytes)] = 8e6;  // 4e9/s: a quarter of the transfer ceiling
+  copy.work[size_t(WorkUnit::ImageBytes)] = 4e6;     // 2e9/s: half the shader-copy ceiling
+  c.passes.push_back(copy);
   return c;
 }
 
@@ -46,6 +51,14 @@ TEST(WorkReport, RatesAreWorkOverTimeAgainstTheUnitsCeiling) {
   EXPECT_FALSE(rates[1].fraction);
   EXPECT_FALSE(rates[1].scatteredFraction);
   EXPECT_TRUE(workRates(someColumn().passes[1], &ceilings).empty());
+  // Bytes a transfer command moved are compared with the transfer ceiling, not the shader's.
+  const std::vector<WorkRate> copy = workRates(someColumn().passes[2], &ceilings);
+  ASSERT_EQ(copy.size(), 2u);
+  EXPECT_EQ(copy[0].unit, WorkUnit::ImageBytes);
+  EXPECT_DOUBLE_EQ(*copy[0].fraction, 0.5);
+  EXPECT_EQ(copy[1].unit, WorkUnit::TransferBytes);
+  EXPECT_DOUBLE_EQ(*copy[1].ceiling, 16e9);
+  EXPECT_DOUBLE_EQ(*copy[1].fraction, 0.25);
   EXPECT_FALSE(workRates(someColumn().passes[0], nullptr)[0].fraction);  // --no-ceilings
 }
 
@@ -56,6 +69,10 @@ TEST(WorkReport, TableNamesEveryPass) {
   EXPECT_NE(table.find("50.0%"), std::string::npos) << table;
   EXPECT_NE(table.find("250.0%"), std::string::npos) << table;  // of the scattered ceiling
   EXPECT_NE(table.find("reported no work: Quiet"), std::string::npos) << table;
+  EXPECT_NE(table.find("transfer bytes"), std::string::npos) << table;
+  EXPECT_NE(table.find("25.0%"), std::string::npos) << table;
+  const std::string ceilingRows = ceilingsTable(ceilings);
+  EXPECT_NE(ceilingRows.find("vkCmdCopyImage"), std::string::npos) << ceilingRows;
 }
 
 TEST(WorkReport, JsonIsWrittenAndParses) {
@@ -85,6 +102,8 @@ TEST(WorkReport, JsonIsWrittenAndParses) {
   EXPECT_TRUE(trace["work"]["textureSamples"]["gpuCounted"].get<bool>());
   EXPECT_TRUE(trace["work"]["rays"]["fraction"].is_null());
   EXPECT_TRUE(run["passes"][1]["work"].empty());
+  EXPECT_DOUBLE_EQ(j["ceilings"]["transferBytesPerSecond"].get<double>(), 16e9);
+  EXPECT_DOUBLE_EQ(run["passes"][2]["work"]["transferBytes"]["fraction"].get<double>(), 0.25);
   std::filesystem::remove(path);
 }
 

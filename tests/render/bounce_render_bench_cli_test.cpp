@@ -43,8 +43,9 @@ TEST(BounceRenderBenchCli, WritesCeilingsAndEachPassesWorkAsJson) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("trilinear RGBA16F 3D samples/s"), std::string::npos) << r.output;
   const nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
-  for (const char* ceiling : {"textureSamplesPerSecond", "scatteredTextureSamplesPerSecond",
-                              "bufferBytesPerSecond", "imageBytesPerSecond", "flopsPerSecond"})
+  for (const char* ceiling :
+       {"textureSamplesPerSecond", "scatteredTextureSamplesPerSecond", "bufferBytesPerSecond",
+        "imageBytesPerSecond", "transferBytesPerSecond", "flopsPerSecond"})
     EXPECT_GT(j["ceilings"][ceiling].get<double>(), 0.0) << ceiling;
   ASSERT_EQ(j["runs"].size(), 1u);
   const nlohmann::json& run = j["runs"][0];

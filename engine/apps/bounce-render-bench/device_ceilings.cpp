@@ -124,6 +124,29 @@ double imageBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipeli
   return 2.0 * double(kSize) * kSize * kSize * 8.0 / s;
 }
 
+// The same volume copied by vkCmdCopyImage: transfer commands (a pass's copies, clears and
+// fills) run no shader, and on lavapipe they are memcpy loops several times faster than
+// the copy shader, so they are compared with this instead.
+double transferBytesPerSecond(const gpu::Device& device, const TimedDispatch& timer, int runs) {
+  constexpr uint32_t kSize = 128;
+  const VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  gpu::Image source = makeVolume(device, kSize, usage, "ceiling.transferSource");
+  gpu::Image destination = makeVolume(device, kSize, usage, "ceiling.transferDestination");
+  const std::vector<uint16_t> texels = halfPattern(kSize);
+  gpu::uploadImage(device, source, texels.data(), texels.size() * 2, VK_IMAGE_LAYOUT_GENERAL);
+  gpu::uploadImage(device, destination, texels.data(), texels.size() * 2, VK_IMAGE_LAYOUT_GENERAL);
+  VkImageCopy region{};
+  region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.extent = {kSize, kSize, kSize};
+  const double s = timer.medianSeconds(
+      [&](VkCommandBuffer cmd) {
+        vkCmdCopyImage(cmd, source.handle(), VK_IMAGE_LAYOUT_GENERAL, destination.handle(),
+                       VK_IMAGE_LAYOUT_GENERAL, 1, &region);
+      },
+      runs);
+  return 2.0 * double(kSize) * kSize * kSize * 8.0 / s;
+}
+
 // `scattered`: each invocation marches from its own random place in its own direction
 // (ceiling_trilinear.comp); otherwise neighbours march side by side.
 double trilinearSamplesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines,
@@ -176,6 +199,8 @@ std::optional<double> DeviceCeilings::perSecond(WorkUnit unit) const {
       return bufferBytesPerSecond;
     case WorkUnit::ImageBytes:
       return imageBytesPerSecond;
+    case WorkUnit::TransferBytes:
+      return transferBytesPerSecond;
     case WorkUnit::TextureSamples:
       return textureSamplesPerSecond;
     case WorkUnit::Flops:
@@ -196,6 +221,8 @@ std::string DeviceCeilings::describe(WorkUnit unit) {
       return "storage-buffer copy, bytes read + written/s";
     case WorkUnit::ImageBytes:
       return "RGBA16F 3D storage-image copy, bytes read + written/s";
+    case WorkUnit::TransferBytes:
+      return "RGBA16F 3D vkCmdCopyImage, bytes read + written/s";
     case WorkUnit::TextureSamples:
       return "trilinear RGBA16F 3D samples/s, coherent";
     case WorkUnit::Flops:
@@ -213,6 +240,7 @@ DeviceCeilings measureDeviceCeilings(const gpu::Device& device, gpu::PipelineCac
   c.flopsPerSecond = fmaFlopsPerSecond(device, pipelines, timer, runs);
   c.bufferBytesPerSecond = bufferBytesPerSecond(device, pipelines, timer, runs);
   c.imageBytesPerSecond = imageBytesPerSecond(device, pipelines, timer, runs);
+  c.transferBytesPerSecond = transferBytesPerSecond(device, timer, runs);
   c.textureSamplesPerSecond = trilinearSamplesPerSecond(device, pipelines, timer, runs, false);
   c.scatteredTextureSamplesPerSecond = trilinearSamplesPerSecond(device, pipelines, timer, runs, true);
   c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,7 +2,8 @@
 // What the device can do at most, measured by small compute microbenchmarks in the same
 // run as the passes they are compared with: trilinear RGBA16F 3D-texture samples/s
 // (coherent, and scattered as a cone tracer's lanes are), storage-buffer and storage-image bandwidth (read +
-// write bytes/s of a copy shader) and the FMA rate. Each is the median of several dispatches after a warm-up.
+// write bytes/s of a copy shader), the same for a transfer-command image copy, and the FMA rate. Each is the
+// median of several dispatches after a warm-up.
 
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/pass_work.h"
@@ -19,10 +20,11 @@ struct DeviceCeilings {
   /// device it is several times lower (every lane's 8 texels are other cache lines and
   /// pages); texture work is shown against both.
   double scatteredTextureSamplesPerSecond = 0.0;
-  double bufferBytesPerSecond = 0.0;  ///< storage buffer, read + written
-  double imageBytesPerSecond = 0.0;   ///< RGBA16F 3D storage image, imageLoad + imageStore
-  double flopsPerSecond = 0.0;        ///< FMA chains, two flops each
-  double seconds = 0.0;               ///< wall time the measurements took
+  double bufferBytesPerSecond = 0.0;    ///< storage buffer, read + written
+  double imageBytesPerSecond = 0.0;     ///< RGBA16F 3D storage image, imageLoad + imageStore
+  double transferBytesPerSecond = 0.0;  ///< RGBA16F 3D image, vkCmdCopyImage, read + written
+  double flopsPerSecond = 0.0;          ///< FMA chains, two flops each
+  double seconds = 0.0;                 ///< wall time the measurements took
 
   /// The ceiling work in `unit` is compared with (none for rays).
   std::optional<double> perSecond(WorkUnit unit) const;

@@ -28,7 +28,8 @@ std::string percent(const std::optional<double>& fraction) {
 }
 
 std::string jsonKey(WorkUnit unit) {
-  static constexpr const char* kKeys[] = {"bufferBytes", "imageBytes", "textureSamples", "flops", "rays"};
+  static constexpr const char* kKeys[] = {"bufferBytes", "imageBytes", "textureSamples",
+                                          "flops",       "rays",       "transferBytes"};
   return kKeys[size_t(unit)];
 }
 
@@ -53,8 +54,8 @@ std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* 
 std::string ceilingsTable(const DeviceCeilings& c) {
   std::string out = fmt::format("| {:<54} | {:>14} |\n|{:-<56}|{:->15}:|\n",
                                 "device ceiling (median of runs)", "per second", "", "");
-  for (WorkUnit u :
-       {WorkUnit::TextureSamples, WorkUnit::BufferBytes, WorkUnit::ImageBytes, WorkUnit::Flops}) {
+  for (WorkUnit u : {WorkUnit::TextureSamples, WorkUnit::BufferBytes, WorkUnit::ImageBytes,
+                     WorkUnit::TransferBytes, WorkUnit::Flops}) {
     out += fmt::format("| {:<54} | {:>14} |\n", DeviceCeilings::describe(u), si(*c.perSecond(u)));
     if (const auto scattered = c.scatteredPerSecond(u))
       out += fmt::format("| {:<54} | {:>14} |\n", DeviceCeilings::describeScattered(u), si(*scattered));
@@ -103,6 +104,7 @@ nlohmann::json benchJson(const std::string& device, const std::string& scene, co
                      {"scatteredTextureSamplesPerSecond", ceilings->scatteredTextureSamplesPerSecond},
                      {"bufferBytesPerSecond", ceilings->bufferBytesPerSecond},
                      {"imageBytesPerSecond", ceilings->imageBytesPerSecond},
+                     {"transferBytesPerSecond", ceilings->transferBytesPerSecond},
                      {"flopsPerSecond", ceilings->flopsPerSecond},
                      {"seconds", ceilings->seconds}};
   } else {

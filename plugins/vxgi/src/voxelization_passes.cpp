@@ -155,7 +155,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         vkCmdClearColorImage(ctx.cmd(), ctx.image(sums).handle(), ctx.layout(sums), &zero, 1, &range);
         const VkExtent3D e = ctx.image(sums).extent();
-        ctx.addWork(WorkUnit::ImageBytes, uint64_t(e.width) * e.height * e.depth * 4u);  // R32F written
+        ctx.addWork(WorkUnit::TransferBytes, uint64_t(e.width) * e.height * e.depth * 4u);  // R32F written
       }
     };
   });
@@ -501,9 +501,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                            VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
         vkCmdCopyImage(ctx.cmd(), image, layout, image, layout, uint32_t(rowCopies.size()), rowCopies.data());
-        ctx.addWork(WorkUnit::ImageBytes, 2u * texelBytes * uint64_t(n) *
-                                              (uint64_t(height) + uint64_t(rows) * format.stackedSigns()) *
-                                              format.stackLevels);
+        ctx.addWork(WorkUnit::TransferBytes, 2u * texelBytes * uint64_t(n) *
+                                                 (uint64_t(height) + uint64_t(rows) * format.stackedSigns()) *
+                                                 format.stackLevels);
       }
     };
   });

@@ -29,13 +29,15 @@ enum class WorkUnit : uint8_t {
   TextureSamples,  ///< filtered texture fetches (texture/textureLod with a linear sampler)
   Flops,           ///< floating-point operations (an FMA is two)
   Rays,            ///< rays traced (no device ceiling: reported as a rate)
+  TransferBytes,   ///< bytes read plus bytes written by transfer commands (image copies, clears, fills):
+                   ///< on a CPU device these are memcpy-speed loops, not shader invocations
 };
-inline constexpr size_t kWorkUnitCount = 5;
+inline constexpr size_t kWorkUnitCount = 6;
 
-/// "buffer bytes", "image bytes", "texture samples", "flops", "rays".
+/// "buffer bytes", "image bytes", "texture samples", "flops", "rays", "transfer bytes".
 constexpr std::string_view workUnitName(WorkUnit unit) {
-  constexpr std::array<std::string_view, kWorkUnitCount> names{"buffer bytes", "image bytes",
-                                                               "texture samples", "flops", "rays"};
+  constexpr std::array<std::string_view, kWorkUnitCount> names{
+      "buffer bytes", "image bytes", "texture samples", "flops", "rays", "transfer bytes"};
   return names[size_t(unit)];
 }
 
