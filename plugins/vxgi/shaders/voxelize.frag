@@ -89,7 +89,10 @@ bool inBox(ivec3 c, ivec4 lo, ivec4 hi) { return all(greaterThanEqual(c, lo.xyz)
 // single-bounce specular). One loop serves both sides, since a light reaches at most one
 // of them: on a CPU device a second call for the back side runs in full whether or not it
 // is needed (both sides of a branch run under a mask), and lighting was 40% of the pass.
-void outgoingRadiance(vec3 n, bool doubleSided, vec3 albedo, vec3 emission, out vec3 front, out vec3 back) {
+// halfA, halfB: the half-extents of this fragment's piece of surface (a voxel column's),
+// over which the shadow maps are averaged.
+void outgoingRadiance(vec3 n, bool doubleSided, vec3 albedo, vec3 emission, vec3 halfA, vec3 halfB, out vec3 front,
+                      out vec3 back) {
   vec3 reflectedFront = albedo * draw.ambient.rgb;
   vec3 reflectedBack = doubleSided ? reflectedFront : vec3(0.0);
   uint lightCount = uint(draw.ambient.w);
@@ -103,7 +106,7 @@ void outgoingRadiance(vec3 n, bool doubleSided, vec3 albedo, vec3 emission, out 
     bool lit = cosine > 0.0 || (doubleSided && cosine < 0.0);
     if (!lit || all(equal(E, vec3(0.0)))) continue;
     vec3 N = cosine > 0.0 ? n : -n;  // the side the light reaches
-    vec3 reflected = albedo * E * abs(cosine) * shadowFactor(light, gWorld, N, L, shadowMaps);
+    vec3 reflected = albedo * E * abs(cosine) * shadowFactorOverPatch(light, gWorld, N, L, halfA, halfB, shadowMaps);
     if (cosine > 0.0)
       reflectedFront += reflected;
     else
@@ -155,7 +158,17 @@ void main() {
 
 #if !VXGI_AO_MODE
   vec3 front, back;
-  outgoingRadiance(n, doubleSided, albedo, emission, front, back);
+  // The voxel face this fragment covers, carried onto the surface's plane: half a voxel
+  // along each of the projection plane's axes, and the depth change that goes with it
+  // (|n_axis| ≥ 1/√3, so the division is safe). The emittance of a voxel that a shadow
+  // edge crosses is then its lit fraction, not whether its centre is lit.
+  int axisA = (gAxis + 1) % 3, axisB = (gAxis + 2) % 3;
+  vec3 halfA = vec3(0.0), halfB = vec3(0.0);
+  halfA[axisA] = 0.5 * v;
+  halfA[gAxis] = -0.5 * v * n[axisA] / n[gAxis];
+  halfB[axisB] = 0.5 * v;
+  halfB[gAxis] = -0.5 * v * n[axisB] / n[gAxis];
+  outgoingRadiance(n, doubleSided, albedo, emission, halfA, halfB, front, back);
   front = sanitize(front, HALF_MAX);
   back = sanitize(back, HALF_MAX);
 #endif

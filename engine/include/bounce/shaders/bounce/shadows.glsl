@@ -5,32 +5,53 @@
 
 #include "bounce/lights.glsl"
 
-// Fraction of the light reaching P (1: lit). `N` is the geometric normal, used to offset
-// the lookup along it (normal-offset shadows) so lit surfaces do not shadow themselves.
-float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow maps) {
-  int layer = int(light.intensity.w);
-  if (layer < 0) return 1.0;
+// Where P's shadow-map lookup is made: offset along the geometric normal N (normal-offset
+// shadows) so lit surfaces do not shadow themselves. The offset grows with the shadow
+// texel's footprint at P (params.w is its size at 1 m for perspective maps, in metres for
+// directional maps) and with grazing angles. Half a texel even head-on: a surface facing
+// the light squarely stores the very depth it looks up, and a zero offset left
+// lit-or-shadowed to rounding (a directional light down an axis once lit nothing).
+vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L) {
   uint type = uint(light.directionType.w + 0.5);
-  vec3 toP = P - light.positionRange.xyz;
-  // The offset grows with the shadow texel's footprint at P (params.w is its size at
-  // 1 m for perspective maps, in metres for directional maps) and with grazing angles.
-  // Half a texel even head-on: a surface facing the light squarely stores the very depth
-  // it looks up, and a zero offset left lit-or-shadowed to rounding (a directional light
-  // down an axis once lit nothing).
-  float footprint = type == LIGHT_DIRECTIONAL ? light.params.w : light.params.w * length(toP);
+  float footprint =
+      type == LIGHT_DIRECTIONAL ? light.params.w : light.params.w * length(P - light.positionRange.xyz);
   float cosTheta = saturate(dot(N, L));
-  vec3 offsetP = P + N * (light.params.z + footprint * (0.5 + 1.5 * sqrt(1.0 - cosTheta * cosTheta)));
-  if (type == LIGHT_POINT) {
+  return P + N * (light.params.z + footprint * (0.5 + 1.5 * sqrt(1.0 - cosTheta * cosTheta)));
+}
+
+// The layer of the light's maps that holds the lookup point Q (the light has maps).
+int shadowLayer(Light light, vec3 Q) {
+  int layer = int(light.intensity.w);
+  if (uint(light.directionType.w + 0.5) == LIGHT_POINT) {
     // Cube face by the major axis of the point looked up (the offset one: choosing by P
     // sent points near a seam to a face that does not contain them), in the order
     // +X −X +Y −Y +Z −Z. Faces are a little wider than 90° (light_setup.cpp), so the
     // 3×3 taps below stay inside the chosen face.
-    vec3 d = offsetP - light.positionRange.xyz;
+    vec3 d = Q - light.positionRange.xyz;
     vec3 a = abs(d);
     int face = (a.x >= a.y && a.x >= a.z) ? (d.x > 0.0 ? 0 : 1) : (a.y >= a.z ? (d.y > 0.0 ? 2 : 3) : (d.z > 0.0 ? 4 : 5));
     layer += face;
   }
-  vec4 clip = shadowMatrices[layer] * vec4(offsetP, 1.0);
+  return layer;
+}
+
+// One hardware 2×2 PCF tap at clip-space position `clip` of map `layer`; 1 (lit) where
+// the map does not reach.
+float shadowTap(vec4 clip, int layer, sampler2DArrayShadow maps) {
+  if (clip.w <= 0.0) return 1.0;
+  vec3 ndc = clip.xyz / clip.w;
+  vec2 uv = ndc.xy * 0.5 + 0.5;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
+  return texture(maps, vec4(uv, float(layer), ndc.z));
+}
+
+// Fraction of the light reaching P (1: lit). `N` is the geometric normal, used to offset
+// the lookup along it (shadowLookupPoint).
+float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow maps) {
+  if (int(light.intensity.w) < 0) return 1.0;
+  vec3 Q = shadowLookupPoint(light, P, N, L);
+  int layer = shadowLayer(light, Q);
+  vec4 clip = shadowMatrices[layer] * vec4(Q, 1.0);
   if (clip.w <= 0.0) return 1.0;
   vec3 ndc = clip.xyz / clip.w;
   vec2 uv = ndc.xy * 0.5 + 0.5;
@@ -44,5 +65,24 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x) lit += texture(maps, vec4(uv + vec2(x, y) * texel, float(layer), ndc.z));
   return lit / 9.0;
+}
+
+// The lit fraction of a piece of surface around P spanning ±halfA and ±halfB (world
+// vectors in the surface): one hardware 2×2 PCF tap at the centre of each quarter. For a
+// piece several shadow texels wide (a voxel's) this is the fraction of its area in light,
+// where shadowFactor filters only the texels around one point; and it costs 4 taps, not 9.
+// The quarters are placed in clip space (a point's clip position is linear in it), so one
+// matrix product serves them all; a point light's face is the centre's.
+float shadowFactorOverPatch(Light light, vec3 P, vec3 N, vec3 L, vec3 halfA, vec3 halfB, sampler2DArrayShadow maps) {
+  if (int(light.intensity.w) < 0) return 1.0;
+  vec3 Q = shadowLookupPoint(light, P, N, L);
+  int layer = shadowLayer(light, Q);
+  mat4 m = shadowMatrices[layer];
+  vec4 centre = m * vec4(Q, 1.0), a = 0.5 * (m * vec4(halfA, 0.0)), b = 0.5 * (m * vec4(halfB, 0.0));
+#ifdef BOUNCE_WORK_COUNTERS_GLSL
+  countWork(WORK_TEXTURE_SAMPLES, 4u);
+#endif
+  return 0.25 * (shadowTap(centre - a - b, layer, maps) + shadowTap(centre + a - b, layer, maps) +
+                 shadowTap(centre - a + b, layer, maps) + shadowTap(centre + a + b, layer, maps));
 }
 #endif
