@@ -4,7 +4,7 @@
 //   LIGHTS(binding)            binds `SceneLights { Light lights[]; }` (blackboard scene.lights)
 //   SHADOW_MATRICES(binding)   binds `ShadowMatrices { mat4 shadowMatrices[]; }` (scene.shadowMatrices)
 //   uniform sampler2DArrayShadow shadowMaps;   (channels::ShadowMaps, ShadowCompare sampler)
-//   #include "bounce/shadows.glsl"         after SHADOW_MATRICES: shadowFactor()
+//   #include "bounce/shadows.glsl"         after SHADOW_MATRICES: shadowFactor(), shadowFactorOverPatch()
 //
 // Units are radiometric: radiance.rgb is irradiance in W/m² at normal incidence for
 // directional lights and radiant intensity in W/sr for point and spot lights.
