@@ -18,8 +18,9 @@
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(push_constant) uniform Push {
-  ivec4 dstMin;   // mode 0: first voxel (world voxels of the destination level), w: level; else xyz 0
-  ivec4 dstSize;  // voxels to write; mode 0, w: bricks each workgroup takes from the list
+  ivec4 dstMin;   // mode 0: first voxel (world voxels of the destination level), w: level; else x: the
+                  // mip's first block in VxgiMipFlags and VxgiMipBlocks, y: the mip
+  ivec4 dstSize;  // voxels to write; w: bricks (blocks) each workgroup takes from the list
 } pc;
 
 #if VXGI_AO_MODE || !VXGI_EMITTANCE_FP16
@@ -151,7 +152,21 @@ bool storedSomething = false;
     VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, v_)     \
   }
 #else
-#define STORE_OUTPUT(image, sign, local, value) imageStore(image, local, value);
+// Modes 1 and 2 run over the 4³ blocks of the mip mip_list.comp listed (by indirect
+// dispatch, pc.dstSize.w blocks per workgroup), and flag those they store something in.
+// VxgiMipFlags: per block of every mip, 0 when all its texels are known to be zero.
+layout(std430, binding = 64) buffer VxgiMipFlags { uint mipFlags[]; };
+layout(std430, binding = 63) readonly buffer VxgiMipBlocks {
+  uint listedBlocks[8];  // per mip
+  uint blocks[];         // this mip's from pc.dstMin.x: x | y << 8 | z << 16
+};
+bool storedSomething = false;
+#define STORE_OUTPUT(image, sign, local, value)                        \
+  {                                                                    \
+    vec4 v_ = value;                                                   \
+    storedSomething = storedSomething || any(notEqual(v_, vec4(0.0))); \
+    imageStore(image, local, v_);                                      \
+  }
 #endif
 
 #if VXGI_AO_MODE
@@ -168,17 +183,15 @@ vec4 downsampleDensities(vec4 packed[8], int firstDirection) {
 #endif
 
 void downsampleVoxel(ivec3 local) {
-#if DST_STACKED
   storedSomething = false;
   // 8 children read and 1 texel written per texture (the guard copies, 1/size of them,
-  // left out): the work is the listed bricks', known only here.
+  // left out): the work is the listed bricks' or the blocks not skipped, known only here.
 #if VXGI_AO_MODE
   countWork(WORK_IMAGE_BYTES, 9u * uint(VXGI_DIRECTIONS / 3) * 4u);
 #elif VXGI_EMITTANCE_FP16
   countWork(WORK_IMAGE_BYTES, 9u * uint(VXGI_DIRECTIONS) * 8u);
 #else
   countWork(WORK_IMAGE_BYTES, 9u * uint(VXGI_DIRECTIONS) * 4u);
-#endif
 #endif
   vec4 block[8];
 #if VXGI_AO_MODE
@@ -225,8 +238,16 @@ void main() {
     if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, pc.dstSize.xyz))) downsampleVoxel(local);
   }
 #else
-  ivec3 local = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(local, pc.dstSize.xyz))) return;
-  downsampleVoxel(local);
+  int perAxis = (pc.dstSize.x + 3) / 4;
+  for (int k = 0; k < pc.dstSize.w; ++k) {
+    uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
+    if (slot >= listedBlocks[pc.dstMin.y]) return;
+    uint packed = blocks[pc.dstMin.x + int(slot)];
+    ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
+    ivec3 local = (block << 2) + ivec3(gl_LocalInvocationID);
+    if (!all(lessThan(local, pc.dstSize.xyz))) continue;  // a mip under 4 voxels
+    downsampleVoxel(local);
+    if (storedSomething) atomicOr(mipFlags[pc.dstMin.x + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
+  }
 #endif
 }

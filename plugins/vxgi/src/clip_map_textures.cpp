@@ -34,6 +34,16 @@ VkFormat voxelFormat(const ClipMapFormat& f) {
 
 }  // namespace
 
+std::vector<uint32_t> mipFlagOffsets(const ClipMapFormat& format) {
+  std::vector<uint32_t> offsets{0};
+  uint32_t size = format.mapSize / 2;
+  for (uint32_t mip = 0; mip < format.mipCount(); ++mip, size /= 2) {
+    const uint32_t blocks = (size + kBrickVoxels - 1) / kBrickVoxels;
+    offsets.push_back(offsets.back() + blocks * blocks * blocks);
+  }
+  return offsets;
+}
+
 ScratchLayout ScratchLayout::of(const ClipMapFormat& f) {
   ScratchLayout s;
   s.channels = f.directionCount() * (f.ambientOcclusionMode ? 1u : 4u);
@@ -73,6 +83,8 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
       "VXGI.BrickFlags", BufferDesc{bricks * bricks * bricks * format.stackLevels * sizeof(uint32_t)});
   voxelStored_ = std::make_unique<PersistentBuffer>(
       "VXGI.VoxelStored", BufferDesc{bricks * bricks * bricks * format.stackLevels * 2u * sizeof(uint32_t)});
+  mipFlags_ = std::make_unique<PersistentBuffer>(
+      "VXGI.MipFlags", BufferDesc{std::max<uint64_t>(mipFlagOffsets(format).back(), 1) * sizeof(uint32_t)});
   scratch_ = std::make_unique<PersistentTexture>("VXGI.Scratch", ScratchLayout::of(format).desc(format));
   scratchClean_ = false;
   return true;
@@ -84,9 +96,11 @@ ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
   for (auto& t : mips_) h.mips.push_back(graph.importTexture(*t));
   // The executor allocates on first use, contents undefined (and so are the textures'):
   // this frame voxelizes everything, and must first mark every brick as possibly non-zero.
-  h.brickFlagsUndefined = brickFlags_->allocation() == nullptr || voxelStored_->allocation() == nullptr;
+  h.brickFlagsUndefined = brickFlags_->allocation() == nullptr || voxelStored_->allocation() == nullptr ||
+                          mipFlags_->allocation() == nullptr;
   h.brickFlags = graph.importBuffer(*brickFlags_);
   h.voxelStored = graph.importBuffer(*voxelStored_);
+  h.mipFlags = graph.importBuffer(*mipFlags_);
   h.scratchUndefined = scratch_->allocation() == nullptr || !scratchClean_;
   h.scratch = graph.importTexture(*scratch_);
   return h;

@@ -29,8 +29,12 @@ struct ClipMapHandles {
   /// texels the resolve stored for it were all zero, so storing air there again can be
   /// skipped (vxgi/scratch.glsl, VxgiVoxelStored).
   BufferHandle voxelStored;
-  /// True when brickFlags' and voxelStored's contents are undefined (just created): the
-  /// first voxelization sets every flag and bit, so every voxel is resolved once.
+  /// Per 4³ block of every pyramid mip (mipFlagOffsets): 0 when all its texels are known
+  /// to be zero, so the mips pass skips a block whose sources are all air (VxgiMipFlags).
+  BufferHandle mipFlags;
+  /// True when brickFlags', voxelStored's and mipFlags' contents are undefined (just
+  /// created): the first voxelization sets every flag and bit, so every voxel is resolved
+  /// and every mip block computed once.
   bool brickFlagsUndefined = false;
   /// The voxelization's float sums (ScratchLayout), persistent and all zeros between
   /// voxelizations: each resolve zeroes the sums it read, so no level clears the volume.
@@ -81,9 +85,14 @@ class ClipMapTextures {
   std::vector<std::unique_ptr<PersistentTexture>> clip_, mips_;
   std::unique_ptr<PersistentBuffer> brickFlags_;
   std::unique_ptr<PersistentBuffer> voxelStored_;
+  std::unique_ptr<PersistentBuffer> mipFlags_;
   std::unique_ptr<PersistentTexture> scratch_;
   bool scratchClean_ = false;
 };
+
+/// Where each pyramid mip's flags start in VxgiMipFlags: one uint per 4³ block of the mip
+/// (a workgroup of the mips pass, ⌈size/4⌉³), mip after mip; the last entry is the total.
+std::vector<uint32_t> mipFlagOffsets(const ClipMapFormat& format);
 
 /// Voxels per side of a brick of the clip-map (VXGI_BRICK_SHIFT in vxgi/scratch.glsl).
 inline constexpr uint32_t kBrickVoxels = 4;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -137,6 +138,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     if (fillFlags) {
       handles.brickFlags = b.write(handles.brickFlags, Access::TransferDst);
       handles.voxelStored = b.write(handles.voxelStored, Access::TransferDst);
+      handles.mipFlags = b.write(handles.mipFlags, Access::TransferDst);
     }
     // The scratch sums are zeros between voxelizations (each resolve zeroes what it read)
     // once they have been zeroed: here, when just allocated or after a frame that did not
@@ -145,7 +147,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     if (clearScratch) handles.scratch = b.write(handles.scratch, Access::TransferDst);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     BufferHandle mb = materialBuffer, lb = lightBuffer, flags = handles.brickFlags,
-                 stored = handles.voxelStored;
+                 stored = handles.voxelStored, mipFlags = handles.mipFlags;
     TextureHandle sums = handles.scratch;
     return [=](PassContext& ctx) {
       ctx.upload(mb, materialParams.data(), materialParams.size() * sizeof(glm::vec4));
@@ -153,6 +155,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       if (fillFlags) {
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(flags).handle(), 0, VK_WHOLE_SIZE, 1u);
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(stored).handle(), 0, VK_WHOLE_SIZE, ~0u);
+        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(mipFlags).handle(), 0, VK_WHOLE_SIZE, 1u);
       }
       if (clearScratch) {
         VkClearColorValue zero{};
@@ -512,15 +515,62 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     };
   });
 
+  // The pyramid's blocks that may hold something or lie over flagged bricks of the
+  // coarsest level (mip_list.comp); the mips are computed over just those.
+  const std::vector<uint32_t> flagOffsets = mipFlagOffsets(format);
+  const uint32_t mips = format.mipCount();
+  const uint32_t blocksPerGroup =
+      bricksPerResolveGroup(flagOffsets.back(), frame.device && frame.device->cpu);
+  BufferHandle mipArguments, mipBlocks;
+  graph.addPass("VXGI.MipList", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+    BufferHandle levelFlags = b.read(handles.brickFlags, Access::StorageRead);
+    handles.mipFlags = b.write(handles.mipFlags, Access::StorageReadWrite);
+    mipArguments =
+        b.write(b.createBuffer("VXGI.MipArguments", {8 * sizeof(glm::uvec4)}), Access::StorageReadWrite);
+    mipBlocks =
+        b.write(b.createBuffer("VXGI.MipBlocks", {(8 + uint64_t(flagOffsets.back())) * sizeof(uint32_t)}),
+                Access::StorageReadWrite);
+    b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
+    BufferHandle flags = handles.mipFlags, arguments = mipArguments, list = mipBlocks;
+    return [=](PassContext& ctx) {
+      // No workgroups and no blocks listed yet, for every mip.
+      std::array<glm::uvec4, 8> noGroups;
+      noGroups.fill(glm::uvec4(0u, 1u, 1u, 0u));
+      vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(arguments).handle(), 0, sizeof(noGroups), noGroups.data());
+      vkCmdFillBuffer(ctx.cmd(), ctx.buffer(list).handle(), 0, 8 * sizeof(uint32_t), 0u);
+      gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "mip_list.comp", format));
+      gpu::Bindings bind;
+      bind.buffer("clipMap", constants)
+          .buffer("VxgiBrickFlags", levelFlags)
+          .buffer("VxgiMipFlags", flags)
+          .buffer("VxgiMipArguments", arguments)
+          .buffer("VxgiMipBlocks", list);
+      struct {
+        std::array<int32_t, 8> offsets;
+        glm::ivec4 total;
+      } push{};
+      for (uint32_t m = 0; m < mips && m < 8; ++m) push.offsets[m] = int32_t(flagOffsets[m]);
+      push.total = glm::ivec4(int32_t(flagOffsets.back()), int32_t(mips), int32_t(blocksPerGroup), 0);
+      ctx.dispatchThreads(pipeline, bind, glm::uvec3(flagOffsets.back(), 1, 1), push);
+    };
+  });
+
   graph.addPass("VXGI.Mips", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     BufferHandle constants = b.read(handles.constants, Access::StorageRead);
     for (TextureHandle h : handles.clip) b.read(h, Access::StorageRead);
     writeAll(b, handles.mips);
+    BufferHandle arguments = b.read(mipArguments, Access::Indirect);
+    BufferHandle list = b.read(mipBlocks, Access::StorageRead);
+    handles.mipFlags = b.write(handles.mipFlags, Access::StorageReadWrite);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     const ClipMapHandles h = handles;
     return [=](PassContext& ctx) {
       uint32_t size = format.mapSize / 2;
-      for (uint32_t mip = 0; mip < format.mipCount(); ++mip, size /= 2) {
+      for (uint32_t mip = 0; mip < mips; ++mip, size /= 2) {
         const gpu::Pipeline& pipeline =
             ctx.pipelines().compute(downsampleShader(shaders, format, mip == 0 ? 1 : 2));
         gpu::Bindings bind;
@@ -530,12 +580,14 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         else
           bindStorage(bind, "voxelsSrc", h.mips, mip - 1);
         bindStorage(bind, "voxelsDst", h.mips, mip);
-        DownsamplePush push{glm::ivec4(0), glm::ivec4(glm::ivec3(int32_t(size)), mip == 0 ? 1 : 2)};
-        ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
-        ctx.addWork(WorkUnit::ImageBytes, uint64_t(size) * size * size * 9u * format.bytesPerVoxel());
+        bind.buffer("VxgiMipFlags", h.mipFlags).buffer("VxgiMipBlocks", list);
+        // x: the mip's first block in the flags and the list, y: the mip.
+        DownsamplePush push{glm::ivec4(int32_t(flagOffsets[mip]), int32_t(mip), 0, 0),
+                            glm::ivec4(glm::ivec3(int32_t(size)), int32_t(blocksPerGroup))};
+        ctx.dispatchIndirect(pipeline, bind, arguments, push, mip * sizeof(glm::uvec4));
         // The next mip reads what this one wrote: a barrier on just this mip, so the
         // device need not wait for anything else.
-        if (mip + 1 < format.mipCount())
+        if (mip + 1 < mips)
           for (TextureHandle t : h.mips)
             gpu::computeWriteBarrier(ctx.cmd(), ctx.image(t), gpu::ImageRange::mips(mip), ctx.layout(t));
       }
