@@ -81,17 +81,6 @@ double bufferBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipel
   return 2.0 * double(kBytes) / s;
 }
 
-/// A 3D RGBA16F volume of `size`³ with a smooth pattern (so filtering does real work).
-gpu::Image makeVolume(const gpu::Device& device, uint32_t size, VkImageUsageFlags usage, const char* name) {
-  return gpu::Image(device,
-                    TextureDesc{.type = TextureType::Tex3D,
-                                .format = VK_FORMAT_R16G16B16A16_SFLOAT,
-                                .width = size,
-                                .height = size,
-                                .depth = size},
-                    usage, name);
-}
-
 std::vector<uint16_t> halfPattern(uint32_t size) {
   std::vector<uint16_t> texels(size_t(size) * size * size * 4);
   // Half-float bit patterns of values in [0.5, 1): exponent 0x3800, varying mantissa.
@@ -100,15 +89,29 @@ std::vector<uint16_t> halfPattern(uint32_t size) {
   return texels;
 }
 
+/// A 3D RGBA16F volume of `size`³ holding a smooth pattern (so filtering does real work),
+/// left in `layout`. `usage` must include TRANSFER_DST.
+gpu::Image makeVolume(const gpu::Device& device, uint32_t size, VkImageUsageFlags usage, VkImageLayout layout,
+                      const char* name) {
+  gpu::Image volume(device,
+                    TextureDesc{.type = TextureType::Tex3D,
+                                .format = VK_FORMAT_R16G16B16A16_SFLOAT,
+                                .width = size,
+                                .height = size,
+                                .depth = size},
+                    usage, name);
+  const std::vector<uint16_t> texels = halfPattern(size);
+  gpu::uploadImage(device, volume, texels.data(), texels.size() * 2, layout);
+  return volume;
+}
+
 double imageBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines,
                            const TimedDispatch& timer, int runs) {
   constexpr uint32_t kSize = 128;
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  gpu::Image source = makeVolume(device, kSize, usage, "ceiling.imageSource");
-  gpu::Image destination = makeVolume(device, kSize, usage, "ceiling.imageDestination");
-  const std::vector<uint16_t> texels = halfPattern(kSize);
-  gpu::uploadImage(device, source, texels.data(), texels.size() * 2, VK_IMAGE_LAYOUT_GENERAL);
-  gpu::uploadImage(device, destination, texels.data(), texels.size() * 2, VK_IMAGE_LAYOUT_GENERAL);
+  gpu::Image source = makeVolume(device, kSize, usage, VK_IMAGE_LAYOUT_GENERAL, "ceiling.imageSource");
+  gpu::Image destination =
+      makeVolume(device, kSize, usage, VK_IMAGE_LAYOUT_GENERAL, "ceiling.imageDestination");
   const gpu::Pipeline& p = pipelines.compute(shader("ceiling_image_copy.comp"));
   const auto local = p.localSize();
   const double s = timer.medianSeconds(
@@ -130,11 +133,9 @@ double imageBytesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipeli
 double transferBytesPerSecond(const gpu::Device& device, const TimedDispatch& timer, int runs) {
   constexpr uint32_t kSize = 128;
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  gpu::Image source = makeVolume(device, kSize, usage, "ceiling.transferSource");
-  gpu::Image destination = makeVolume(device, kSize, usage, "ceiling.transferDestination");
-  const std::vector<uint16_t> texels = halfPattern(kSize);
-  gpu::uploadImage(device, source, texels.data(), texels.size() * 2, VK_IMAGE_LAYOUT_GENERAL);
-  gpu::uploadImage(device, destination, texels.data(), texels.size() * 2, VK_IMAGE_LAYOUT_GENERAL);
+  gpu::Image source = makeVolume(device, kSize, usage, VK_IMAGE_LAYOUT_GENERAL, "ceiling.transferSource");
+  gpu::Image destination =
+      makeVolume(device, kSize, usage, VK_IMAGE_LAYOUT_GENERAL, "ceiling.transferDestination");
   VkImageCopy region{};
   region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.extent = {kSize, kSize, kSize};
@@ -154,10 +155,7 @@ double trilinearSamplesPerSecond(const gpu::Device& device, gpu::PipelineCache& 
   constexpr uint32_t kSize = 128, kSteps = 64;
   constexpr uint32_t kGrid[3] = {64, 64, 16};
   gpu::Image volume = makeVolume(device, kSize, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                 "ceiling.volume");
-  const std::vector<uint16_t> texels = halfPattern(kSize);
-  gpu::uploadImage(device, volume, texels.data(), texels.size() * 2,
-                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "ceiling.volume");
   const uint64_t invocations = uint64_t(kGrid[0]) * kGrid[1] * kGrid[2];
   gpu::Buffer result(device, invocations * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                      gpu::MemoryUsage::DeviceLocal, "ceiling.trilinear");

@@ -133,8 +133,15 @@ vec4 downsampleFacing(vec4 child[8], int d) {
   return vec4((e * 0.25) / vxgiAlphaPerDensity(density, 1.0), density);
 }
 
-// Stores the block's value: into the clipped level (with its guard copies) or a mip. In a
-// clipped level it also notes whether anything non-zero was stored, for the brick flags.
+// Stores the block's value: into the clipped level (with its guard copies) or a mip, noting
+// whether anything non-zero was stored, for the brick or block flags.
+bool storedSomething = false;
+#define STORE_OUTPUT(image, sign, local, value)                            \
+  {                                                                        \
+    vec4 v_ = value;                                                       \
+    storedSomething = storedSomething || any(notEqual(v_, vec4(0.0)));     \
+    STORE_TEXEL(image, sign, local, v_)                                    \
+  }
 #if DST_STACKED
 // Mode 0 runs over the bricks of the inner box downsample_list.comp listed (by indirect
 // dispatch, one brick per workgroup), and flags those it stores something in.
@@ -144,13 +151,7 @@ layout(std430, binding = 63) readonly buffer VxgiDownsampleBricks {
   uint listedBricks;
   uint bricks[];
 };
-bool storedSomething = false;
-#define STORE_OUTPUT(image, sign, local, value)                                        \
-  {                                                                                    \
-    vec4 v_ = value;                                                                   \
-    storedSomething = storedSomething || any(notEqual(v_, vec4(0.0)));                 \
-    VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, v_)     \
-  }
+#define STORE_TEXEL(image, sign, local, v) VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, v)
 #else
 // Modes 1 and 2 run over the 4³ blocks of the mip mip_list.comp listed (by indirect
 // dispatch, pc.dstSize.w blocks per workgroup), and flag those they store something in.
@@ -160,13 +161,7 @@ layout(std430, binding = 63) readonly buffer VxgiMipBlocks {
   uint listedBlocks[8];  // per mip
   uint blocks[];         // this mip's from pc.dstMin.x: x | y << 8 | z << 16
 };
-bool storedSomething = false;
-#define STORE_OUTPUT(image, sign, local, value)                        \
-  {                                                                    \
-    vec4 v_ = value;                                                   \
-    storedSomething = storedSomething || any(notEqual(v_, vec4(0.0))); \
-    imageStore(image, local, v_);                                      \
-  }
+#define STORE_TEXEL(image, sign, local, v) imageStore(image, local, v);
 #endif
 
 #if VXGI_AO_MODE

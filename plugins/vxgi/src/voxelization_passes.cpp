@@ -29,16 +29,17 @@ gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file,
   return s;
 }
 
-// Bricks one resolve or downsample workgroup takes from its list (brick_list.comp,
-// downsample_list.comp): a power of two that keeps the indirect dispatch within 65535
-// workgroups, the least every device allows (a 256³ level has 262144 bricks). A CPU
+// Bricks (or pyramid blocks) one resolve, downsample or mips workgroup takes from its list
+// (brick_list.comp, downsample_list.comp, mip_list.comp): a power of two that keeps the
+// indirect dispatch within 65535 workgroups for `mostListed` entries, the least every
+// device allows (a 256³ level has 262144 bricks). A CPU
 // device runs each workgroup as a task with a fixed start-up cost, so there a group takes
 // at least 8: the Cornell box's fully re-voxelized resolve went from 8.0–9.5 to 5.5–6.8 ms
 // at 64³ and 36–43 to 25–29 ms at 128³, the downsample from 18–21 to 15–16 ms at 128³
 // (4 bricks: 6.2–7.7 ms at 64³, 16: 6.2–6.8, 32: 6.2–7.4). A GPU wants the groups.
-uint32_t bricksPerResolveGroup(uint32_t bricksPerLevel, bool cpuDevice) {
+uint32_t bricksPerListGroup(uint32_t mostListed, bool cpuDevice) {
   uint32_t k = cpuDevice ? 8 : 1;
-  while ((bricksPerLevel + k - 1) / k > 65535u) k *= 2;
+  while ((mostListed + k - 1) / k > 65535u) k *= 2;
   return k;
 }
 
@@ -173,7 +174,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   BufferHandle downsampleArguments, downsampleBricks;  // downsample_list.comp's
   const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
   const uint32_t bricksPerLevel = bricksPerAxis * bricksPerAxis * bricksPerAxis;
-  const uint32_t bricksPerGroup = bricksPerResolveGroup(bricksPerLevel, frame.device && frame.device->cpu);
+  const bool cpuDevice = frame.device && frame.device->cpu;
+  const uint32_t bricksPerGroup = bricksPerListGroup(bricksPerLevel, cpuDevice);
   for (uint32_t level = 0; level < format.stackLevels; ++level) {
     const std::vector<VoxelBox> boxes = plan.boxes[level];
     const VoxelBox inner = layout.innerBox(level);
@@ -519,8 +521,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   // coarsest level (mip_list.comp); the mips are computed over just those.
   const std::vector<uint32_t> flagOffsets = mipFlagOffsets(format);
   const uint32_t mips = format.mipCount();
-  const uint32_t blocksPerGroup =
-      bricksPerResolveGroup(flagOffsets.back(), frame.device && frame.device->cpu);
+  const uint32_t blocksPerGroup = bricksPerListGroup(flagOffsets.back(), cpuDevice);
   BufferHandle mipArguments, mipBlocks;
   graph.addPass("VXGI.MipList", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     BufferHandle constants = b.read(handles.constants, Access::StorageRead);

@@ -35,14 +35,21 @@ int shadowLayer(Light light, vec3 Q) {
   return layer;
 }
 
+// The map coordinates (uv, depth) of clip-space position `clip`; false where the map does
+// not reach (behind the light, outside the map, beyond its far plane): lit.
+bool shadowMapCoordinates(vec4 clip, out vec3 coords) {
+  coords = vec3(0.0);
+  if (clip.w <= 0.0) return false;
+  vec3 ndc = clip.xyz / clip.w;
+  coords = vec3(ndc.xy * 0.5 + 0.5, ndc.z);
+  return all(greaterThanEqual(coords.xy, vec2(0.0))) && all(lessThanEqual(coords.xy, vec2(1.0))) && ndc.z <= 1.0;
+}
+
 // One hardware 2×2 PCF tap at clip-space position `clip` of map `layer`; 1 (lit) where
 // the map does not reach.
 float shadowTap(vec4 clip, int layer, sampler2DArrayShadow maps) {
-  if (clip.w <= 0.0) return 1.0;
-  vec3 ndc = clip.xyz / clip.w;
-  vec2 uv = ndc.xy * 0.5 + 0.5;
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
-  return texture(maps, vec4(uv, float(layer), ndc.z));
+  vec3 c;
+  return shadowMapCoordinates(clip, c) ? texture(maps, vec4(c.xy, float(layer), c.z)) : 1.0;
 }
 
 // Fraction of the light reaching P (1: lit). `N` is the geometric normal, used to offset
@@ -51,11 +58,8 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   if (int(light.intensity.w) < 0) return 1.0;
   vec3 Q = shadowLookupPoint(light, P, N, L);
   int layer = shadowLayer(light, Q);
-  vec4 clip = shadowMatrices[layer] * vec4(Q, 1.0);
-  if (clip.w <= 0.0) return 1.0;
-  vec3 ndc = clip.xyz / clip.w;
-  vec2 uv = ndc.xy * 0.5 + 0.5;
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
+  vec3 c;
+  if (!shadowMapCoordinates(shadowMatrices[layer] * vec4(Q, 1.0), c)) return 1.0;
   // 3×3 taps of hardware 2×2 PCF: a soft, stable edge at one texel's cost per tap.
 #ifdef BOUNCE_WORK_COUNTERS_GLSL
   countWork(WORK_TEXTURE_SAMPLES, 9u);  // a shader that counts its work counts these taps too
@@ -63,7 +67,7 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   vec2 texel = 1.0 / vec2(textureSize(maps, 0).xy);
   float lit = 0.0;
   for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x) lit += texture(maps, vec4(uv + vec2(x, y) * texel, float(layer), ndc.z));
+    for (int x = -1; x <= 1; ++x) lit += texture(maps, vec4(c.xy + vec2(x, y) * texel, float(layer), c.z));
   return lit / 9.0;
 }
 
