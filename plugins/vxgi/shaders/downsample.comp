@@ -29,22 +29,10 @@ layout(push_constant) uniform Push {
 #define VOXEL_FORMAT rgba16f
 #endif
 
-// VXGI_DOWNSAMPLE_MODE (set by the pass) picks the layouts: the clipped levels are
-// stacked (levels along Z, facing signs along Y: clip_map.glsl), the pyramid holds one
-// texture per facing direction (or, without emittance, per three).
-#if VXGI_DOWNSAMPLE_MODE == 2
-#define SRC_STACKED 0
-#else
-#define SRC_STACKED 1
-#endif
-#if VXGI_DOWNSAMPLE_MODE == 0
-#define DST_STACKED 1
-#else
-#define DST_STACKED 0
-#endif
-
-// Texture, and facing sign within it, of facing direction d (0..5: +X +Y +Z −X −Y −Z):
-// stacked, ±a share texture a; in the pyramid each direction has its own.
+// Every mode reads and writes the stacked textures (clip_map.glsl: levels along Z, facing
+// signs along Y, the pyramid's mips in the slab after the levels): texture a holds facing
+// directions ±a (or, without emittance, three directions per texture). Source and
+// destination are the same textures, disjoint parts of them.
 layout(binding = 40, VOXEL_FORMAT) uniform readonly image3D voxelsSrc0;
 layout(binding = 30, VOXEL_FORMAT) uniform writeonly image3D voxelsDst0;
 #if VXGI_DIRECTIONS == 6 || !VXGI_AO_MODE
@@ -54,34 +42,9 @@ layout(binding = 31, VOXEL_FORMAT) uniform writeonly image3D voxelsDst1;
 #if !VXGI_AO_MODE
 layout(binding = 42, VOXEL_FORMAT) uniform readonly image3D voxelsSrc2;
 layout(binding = 32, VOXEL_FORMAT) uniform writeonly image3D voxelsDst2;
-#if VXGI_DIRECTIONS == 6 && !SRC_STACKED
-layout(binding = 43, VOXEL_FORMAT) uniform readonly image3D voxelsSrc3;
-layout(binding = 44, VOXEL_FORMAT) uniform readonly image3D voxelsSrc4;
-layout(binding = 45, VOXEL_FORMAT) uniform readonly image3D voxelsSrc5;
-#define SRC3 voxelsSrc3
-#define SRC4 voxelsSrc4
-#define SRC5 voxelsSrc5
-#else
-#define SRC3 voxelsSrc0
-#define SRC4 voxelsSrc1
-#define SRC5 voxelsSrc2
 #endif
-#if VXGI_DIRECTIONS == 6 && !DST_STACKED
-layout(binding = 33, VOXEL_FORMAT) uniform writeonly image3D voxelsDst3;
-layout(binding = 34, VOXEL_FORMAT) uniform writeonly image3D voxelsDst4;
-layout(binding = 35, VOXEL_FORMAT) uniform writeonly image3D voxelsDst5;
-#define DST3 voxelsDst3
-#define DST4 voxelsDst4
-#define DST5 voxelsDst5
-#else
-#define DST3 voxelsDst0
-#define DST4 voxelsDst1
-#define DST5 voxelsDst2
-#endif
-#endif
-// The facing sign a texture holds direction 3..5 at (1 only where stacked in pairs).
-#define SRC_NEGATIVE (SRC_STACKED != 0 && VXGI_SIGNS == 2 ? 1 : 0)
-#define DST_NEGATIVE (DST_STACKED != 0 && VXGI_SIGNS == 2 ? 1 : 0)
+// The facing sign a texture holds direction 3..5 at.
+#define NEGATIVE (VXGI_SIGNS == 2 ? 1 : 0)
 
 // Where child `o` (0/1 per axis) of output voxel `local` lives in the source image.
 ivec3 childCoord(ivec3 local, ivec3 o, int sign) {
@@ -91,7 +54,7 @@ ivec3 childCoord(ivec3 local, ivec3 o, int sign) {
 #elif VXGI_DOWNSAMPLE_MODE == 1
   return vxgiStorageTexel(2 * local + o, clipMap.levelCount - 1, sign);  // local is toroidal already
 #else
-  return 2 * local + o;
+  return vxgiMipTexel(2 * local + o, pc.dstMin.y - 1, sign);
 #endif
 }
 
@@ -133,7 +96,7 @@ vec4 downsampleFacing(vec4 child[8], int d) {
   return vec4((e * 0.25) / vxgiAlphaPerDensity(density, 1.0), density);
 }
 
-// Stores the block's value: into the clipped level (with its guard copies) or a mip, noting
+// Stores the block's value into the clipped level or a mip (VXGI.ClipGuards copies the guards), noting
 // whether anything non-zero was stored, for the brick or block flags.
 bool storedSomething = false;
 #define STORE_OUTPUT(image, sign, local, value)                            \
@@ -142,7 +105,7 @@ bool storedSomething = false;
     storedSomething = storedSomething || any(notEqual(v_, vec4(0.0)));     \
     STORE_TEXEL(image, sign, local, v_)                                    \
   }
-#if DST_STACKED
+#if VXGI_DOWNSAMPLE_MODE == 0
 // Mode 0 runs over the bricks of the inner box downsample_list.comp listed (by indirect
 // dispatch, one brick per workgroup), and flags those it stores something in.
 #include "vxgi/scratch.glsl"
@@ -161,7 +124,7 @@ layout(std430, binding = 63) readonly buffer VxgiMipBlocks {
   uint listedBlocks[8];  // per mip
   uint blocks[];         // this mip's from pc.dstMin.x: x | y << 8 | z << 16
 };
-#define STORE_TEXEL(image, sign, local, v) imageStore(image, local, v);
+#define STORE_TEXEL(image, sign, local, v) imageStore(image, vxgiMipTexel(local, pc.dstMin.y, sign), v);
 #endif
 
 #if VXGI_AO_MODE
@@ -204,15 +167,15 @@ void downsampleVoxel(ivec3 local) {
   LOAD_BLOCK(voxelsSrc2, 0, local, block)
   STORE_OUTPUT(voxelsDst2, 0, local, downsampleFacing(block, 2))
 #if VXGI_DIRECTIONS == 6
-  LOAD_BLOCK(SRC3, SRC_NEGATIVE, local, block)
-  STORE_OUTPUT(DST3, DST_NEGATIVE, local, downsampleFacing(block, 3))
-  LOAD_BLOCK(SRC4, SRC_NEGATIVE, local, block)
-  STORE_OUTPUT(DST4, DST_NEGATIVE, local, downsampleFacing(block, 4))
-  LOAD_BLOCK(SRC5, SRC_NEGATIVE, local, block)
-  STORE_OUTPUT(DST5, DST_NEGATIVE, local, downsampleFacing(block, 5))
+  LOAD_BLOCK(voxelsSrc0, NEGATIVE, local, block)
+  STORE_OUTPUT(voxelsDst0, NEGATIVE, local, downsampleFacing(block, 3))
+  LOAD_BLOCK(voxelsSrc1, NEGATIVE, local, block)
+  STORE_OUTPUT(voxelsDst1, NEGATIVE, local, downsampleFacing(block, 4))
+  LOAD_BLOCK(voxelsSrc2, NEGATIVE, local, block)
+  STORE_OUTPUT(voxelsDst2, NEGATIVE, local, downsampleFacing(block, 5))
 #endif
 #endif
-#if DST_STACKED
+#if VXGI_DOWNSAMPLE_MODE == 0
   // Resolves and downsamples skip bricks flagged 0 as air: one this pass filled is not.
   if (storedSomething)
     atomicOr(brickFlags[pc.dstMin.w * vxgiBricksPerLevel() + vxgiBrickIndex(vxgiWrap(pc.dstMin.xyz + local))],
@@ -221,7 +184,7 @@ void downsampleVoxel(ivec3 local) {
 }
 
 void main() {
-#if DST_STACKED
+#if VXGI_DOWNSAMPLE_MODE == 0
   for (int k = 0; k < pc.dstSize.w; ++k) {
     uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
     if (slot >= listedBricks) return;

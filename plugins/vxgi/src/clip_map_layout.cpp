@@ -25,10 +25,15 @@ uint64_t ClipMapFormat::clipBytes() const {
   return uint64_t(stackLevels) * mapSize * levelSlices() * levelSlices() * bytesPerVoxel();
 }
 
+glm::ivec3 ClipMapFormat::mipOrigin(uint32_t mip) const {
+  const int32_t n = int32_t(mapSize), half = n / 2, z = int32_t(stackLevels * levelSlices());
+  if (mip == 0) return {0, 0, z};
+  // Mips 1 .. mip − 1 below it along Y: Σ (n / 2^(j+1) + 1) = n/2 − n/2^mip + mip − 1.
+  return {half + 1, half - (n >> mip) + int32_t(mip) - 1, z};
+}
+
 uint64_t ClipMapFormat::mipBytes() const {
-  uint64_t voxels = 0;
-  for (uint32_t s = mapSize / 2; s >= 1; s /= 2) voxels += uint64_t(s) * s * s;
-  return voxels * bytesPerVoxel();
+  return uint64_t(mapSize) * levelSlices() * mipSlices() * bytesPerVoxel();
 }
 
 uint64_t ClipMapFormat::bytes() const { return clipBytes() + mipBytes(); }

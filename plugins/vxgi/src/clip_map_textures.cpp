@@ -14,16 +14,8 @@ TextureDesc clipDesc(const ClipMapFormat& f, VkFormat format) {
   d.format = format;
   d.width = f.mapSize;
   d.height = f.levelSlices() * f.stackedSigns();  // facing signs stacked along Y, each with its guard row
-  d.depth = f.levelSlices() * f.stackLevels;      // levels stacked along Z, each with its guard slice
-  return d;
-}
-
-TextureDesc mipDesc(const ClipMapFormat& f, VkFormat format) {
-  TextureDesc d;
-  d.type = TextureType::Tex3D;
-  d.format = format;
-  d.width = d.height = d.depth = f.mapSize / 2;
-  d.mips = f.mipCount();
+  // Levels stacked along Z, each with its guard slice, then the pyramid's slab.
+  d.depth = f.levelSlices() * f.stackLevels + f.mipSlices();
   return d;
 }
 
@@ -68,16 +60,11 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
   format_ = format;
   configured_ = true;
   clip_.clear();
-  mips_.clear();
   const bool ao = format.ambientOcclusionMode;
   for (uint32_t i = 0; i < format.clipTextureCount(); ++i)
     clip_.push_back(std::make_unique<PersistentTexture>(
         ao ? fmt::format("VXGI.Opacity{}", i) : fmt::format("VXGI.Axis{}", i),
         clipDesc(format, voxelFormat(format))));
-  for (uint32_t i = 0; i < format.mipTextureCount(); ++i)
-    mips_.push_back(std::make_unique<PersistentTexture>(
-        ao ? fmt::format("VXGI.OpacityMips{}", i) : fmt::format("VXGI.FacingMips{}", i),
-        mipDesc(format, voxelFormat(format))));
   const uint64_t bricks = uint64_t(format.mapSize / kBrickVoxels);
   brickFlags_ = std::make_unique<PersistentBuffer>(
       "VXGI.BrickFlags", BufferDesc{bricks * bricks * bricks * format.stackLevels * sizeof(uint32_t)});
@@ -93,7 +80,6 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
 ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
   ClipMapHandles h;
   for (auto& t : clip_) h.clip.push_back(graph.importTexture(*t));
-  for (auto& t : mips_) h.mips.push_back(graph.importTexture(*t));
   // The executor allocates on first use, contents undefined (and so are the textures'):
   // this frame voxelizes everything, and must first mark every brick as possibly non-zero.
   h.brickFlagsUndefined = brickFlags_->allocation() == nullptr || voxelStored_->allocation() == nullptr ||
@@ -108,26 +94,22 @@ ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
 
 ClipMapHandles ClipMapTextures::readSampled(PassBuilder& b, ClipMapHandles h) {
   h.constants = b.read(h.constants, Access::StorageRead);
-  for (auto* list : {&h.clip, &h.mips})
-    for (TextureHandle& t : *list) t = b.read(t, Access::Sampled);
+  for (TextureHandle& t : h.clip) t = b.read(t, Access::Sampled);
   return h;
 }
 
 void ClipMapTextures::bindSampled(gpu::Bindings& b, const ClipMapHandles& h) {
   b.buffer("clipMap", h.constants);
-  // Clipped levels wrap in the sampler along X and Y, and along Z through the guard slice
-  // (they are stacked in Z; the shader keeps Z inside a level); the pyramid wraps in the
-  // sampler along all three.
+  // Clipped levels wrap in the sampler along X, and along Y and Z through the guard row
+  // and slice (the shader keeps Y and Z inside a level); the pyramid's mips through their
+  // guards along all three.
   for (size_t i = 0; i < h.clip.size(); ++i)
     b.texture(fmt::format("voxelsClip{}", i), h.clip[i], gpu::SamplerKind::LinearRepeat);
-  for (size_t i = 0; i < h.mips.size(); ++i)
-    b.texture(fmt::format("voxelsMip{}", i), h.mips[i], gpu::SamplerKind::LinearMipmapRepeat);
 }
 
 uint64_t ClipMapTextures::bytes() const {
   uint64_t total = 0;
-  for (const auto* list : {&clip_, &mips_})
-    for (const auto& t : *list) total += textureBytes(t->desc());
+  for (const auto& t : clip_) total += textureBytes(t->desc());
   return total;
 }
 

@@ -15,11 +15,11 @@
 namespace bounce::vxgi {
 
 /// This frame's versions of every clip-map texture: clip texture a holds the facing
-/// directions ±a (signs stacked in Y), mip texture d facing direction d (radiance ×
-/// density, density); in ambient-occlusion mode texture i (both) the densities of facing
-/// directions 3i..3i+2 (clip_map_layout.h).
+/// directions ±a (signs stacked in Y; radiance × density, density) at every level and
+/// mip; in ambient-occlusion mode texture i the densities of facing directions 3i..3i+2
+/// (clip_map_layout.h).
 struct ClipMapHandles {
-  std::vector<TextureHandle> clip, mips;
+  std::vector<TextureHandle> clip;
   BufferHandle constants;  ///< ClipMapConstants for this frame
   /// Per 4³ brick of every clipped level (toroidal, as the voxels): 0 when all its texels
   /// are known to be zero, so a re-voxelization need not resolve it while it stays empty
@@ -82,7 +82,7 @@ class ClipMapTextures {
  private:
   ClipMapFormat format_{};
   bool configured_ = false;
-  std::vector<std::unique_ptr<PersistentTexture>> clip_, mips_;
+  std::vector<std::unique_ptr<PersistentTexture>> clip_;
   std::unique_ptr<PersistentBuffer> brickFlags_;
   std::unique_ptr<PersistentBuffer> voxelStored_;
   std::unique_ptr<PersistentBuffer> mipFlags_;

@@ -50,6 +50,50 @@ gpu::ShaderSource downsampleShader(const std::filesystem::path& shaders, const C
   return shader(shaders, "downsample.comp", format, "VXGI_DOWNSAMPLE_MODE", mode);
 }
 
+// The guard copies of one clip-map texture (VXGI.ClipGuards): per axis (Z, Y, X) the
+// regions copied in one vkCmdCopyImage (the axes in order, each reading what the one
+// before wrote), and the texels written in all.
+struct ClipGuardCopies {
+  std::array<std::vector<VkImageCopy>, 3> perAxis;
+  uint64_t texels = 0;
+};
+
+ClipGuardCopies clipGuardCopies(const ClipMapFormat& format) {
+  ClipGuardCopies copies;
+  const int32_t n = int32_t(format.mapSize), rows = int32_t(format.levelSlices());
+  const int32_t signs = int32_t(format.stackedSigns());
+  // Copies `extent` from `from` to `from` + `size` along `axis` (0 X, 1 Y, 2 Z).
+  auto add = [&](int axis, VkOffset3D from, int32_t size, VkExtent3D extent) {
+    VkImageCopy c{};
+    c.srcSubresource = c.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    c.srcOffset = c.dstOffset = from;
+    (axis == 0 ? c.dstOffset.x : axis == 1 ? c.dstOffset.y : c.dstOffset.z) += size;
+    c.extent = extent;
+    copies.perAxis[2 - axis].push_back(c);
+    copies.texels += uint64_t(extent.width) * extent.height * extent.depth;
+  };
+  // Clipped levels: slice and row (X wraps in the sampler); rows over all n + 1 slices,
+  // the guard slice included, which fills the corner.
+  for (int32_t l = 0; l < int32_t(format.stackLevels); ++l) {
+    add(2, {0, 0, l * rows}, n, {uint32_t(n), uint32_t(rows * signs), 1});
+    for (int32_t s = 0; s < signs; ++s) add(1, {0, s * rows, l * rows}, n, {uint32_t(n), 1, uint32_t(rows)});
+  }
+  // Mips (ClipMapFormat::mipOrigin): slice, row and column, each over the guards
+  // of the axes before it.
+  for (uint32_t m = 0; m < format.mipCount(); ++m) {
+    const int32_t size = int32_t(format.mipSize(m));
+    const glm::ivec3 origin = format.mipOrigin(m);
+    const uint32_t u = uint32_t(size);
+    for (int32_t s = 0; s < signs; ++s) {
+      const VkOffset3D o{origin.x, origin.y + s * rows, origin.z};
+      add(2, o, size, {u, u, 1});
+      add(1, o, size, {u, 1, u + 1});
+      add(0, o, size, {1, u + 1, u + 1});
+    }
+  }
+  return copies;
+}
+
 struct VoxelizePush {
   glm::ivec4 regionMin, regionMax, innerMin, innerMax, scratchLayout;
   glm::vec4 ambient;  // rgb: constant irradiance added; w: light count
@@ -471,52 +515,6 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     });
   }
 
-  // The guard row and slice of every level and sign (clip_map_layout.h): copies of row 0
-  // and slice 0, so a trilinear fetch spans the toroidal seams. Copied here, once for all
-  // levels, rather than stored twice by every writer under a per-voxel branch.
-  graph.addPass("VXGI.ClipGuards", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    for (TextureHandle& h : handles.clip) {
-      b.read(h, Access::TransferSrc);
-      h = b.write(h, Access::TransferDst);
-    }
-    b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
-    const std::vector<TextureHandle> clip = handles.clip;
-    return [=](PassContext& ctx) {
-      const int32_t n = int32_t(format.mapSize), rows = int32_t(format.levelSlices());
-      const uint32_t height = format.levelSlices() * format.stackedSigns();
-      std::vector<VkImageCopy> slices, rowCopies;
-      for (int32_t l = 0; l < int32_t(format.stackLevels); ++l) {
-        VkImageCopy c{};
-        c.srcSubresource = c.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        c.srcOffset = {0, 0, l * rows};
-        c.dstOffset = {0, 0, l * rows + n};
-        c.extent = {uint32_t(n), height, 1};
-        slices.push_back(c);
-        for (int32_t s = 0; s < int32_t(format.stackedSigns()); ++s) {
-          // Rows over all n + 1 slices, the guard slice included: that fills the corner.
-          c.srcOffset = {0, s * rows, l * rows};
-          c.dstOffset = {0, s * rows + n, l * rows};
-          c.extent = {uint32_t(n), 1, uint32_t(rows)};
-          rowCopies.push_back(c);
-        }
-      }
-      const uint64_t texelBytes = format.ambientOcclusionMode || !format.emittanceFp16 ? 4u : 8u;
-      for (TextureHandle h : clip) {
-        const VkImage image = ctx.image(h).handle();
-        const VkImageLayout layout = ctx.layout(h);
-        vkCmdCopyImage(ctx.cmd(), image, layout, image, layout, uint32_t(slices.size()), slices.data());
-        // The row copies read the guard slice just written and write its corner row again.
-        gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                           VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        vkCmdCopyImage(ctx.cmd(), image, layout, image, layout, uint32_t(rowCopies.size()), rowCopies.data());
-        ctx.addWork(WorkUnit::TransferBytes, 2u * texelBytes * uint64_t(n) *
-                                                 (uint64_t(height) + uint64_t(rows) * format.stackedSigns()) *
-                                                 format.stackLevels);
-      }
-    };
-  });
-
   // The pyramid's blocks that may hold something or lie over flagged bricks of the
   // coarsest level (mip_list.comp); the mips are computed over just those.
   const std::vector<uint32_t> flagOffsets = mipFlagOffsets(format);
@@ -562,8 +560,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
 
   graph.addPass("VXGI.Mips", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     BufferHandle constants = b.read(handles.constants, Access::StorageRead);
-    for (TextureHandle h : handles.clip) b.read(h, Access::StorageRead);
-    writeAll(b, handles.mips);
+    // Source and destination are the same textures: the coarsest level, then each mip,
+    // into the pyramid's slab.
+    writeAll(b, handles.clip);
     BufferHandle arguments = b.read(mipArguments, Access::Indirect);
     BufferHandle list = b.read(mipBlocks, Access::StorageRead);
     handles.mipFlags = b.write(handles.mipFlags, Access::StorageReadWrite);
@@ -576,23 +575,51 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             ctx.pipelines().compute(downsampleShader(shaders, format, mip == 0 ? 1 : 2));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants);
-        if (mip == 0)
-          bindStorage(bind, "voxelsSrc", h.clip);
-        else
-          bindStorage(bind, "voxelsSrc", h.mips, mip - 1);
-        bindStorage(bind, "voxelsDst", h.mips, mip);
+        bindStorage(bind, "voxelsSrc", h.clip);
+        bindStorage(bind, "voxelsDst", h.clip);
         bind.buffer("VxgiMipFlags", h.mipFlags).buffer("VxgiMipBlocks", list);
         // x: the mip's first block in the flags and the list, y: the mip.
         DownsamplePush push{glm::ivec4(int32_t(flagOffsets[mip]), int32_t(mip), 0, 0),
                             glm::ivec4(glm::ivec3(int32_t(size)), int32_t(blocksPerGroup))};
         ctx.dispatchIndirect(pipeline, bind, arguments, push, mip * sizeof(glm::uvec4));
-        // The next mip reads what this one wrote: a barrier on just this mip, so the
-        // device need not wait for anything else.
+        // The next mip reads what this one wrote.
         if (mip + 1 < mips)
-          for (TextureHandle t : h.mips)
-            gpu::computeWriteBarrier(ctx.cmd(), ctx.image(t), gpu::ImageRange::mips(mip), ctx.layout(t));
+          for (TextureHandle t : h.clip)
+            gpu::computeWriteBarrier(ctx.cmd(), ctx.image(t), gpu::ImageRange::all(), ctx.layout(t));
       }
-      committed();
+    };
+  });
+
+  // The guards of every level and sign, and of every mip (clip_map_layout.h): copies of
+  // slice, row (and for the mips column) 0, so a trilinear fetch spans the toroidal seams.
+  // Copied here, once for all levels and mips, rather than stored several times by every
+  // writer under a per-voxel branch.
+  graph.addPass("VXGI.ClipGuards", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    for (TextureHandle& h : handles.clip) {
+      b.read(h, Access::TransferSrc);
+      h = b.write(h, Access::TransferDst);
+    }
+    b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
+    const std::vector<TextureHandle> clip = handles.clip;
+    return [=](PassContext& ctx) {
+      const ClipGuardCopies copies = clipGuardCopies(format);
+      const uint64_t texelBytes = format.ambientOcclusionMode || !format.emittanceFp16 ? 4u : 8u;
+      for (TextureHandle h : clip) {
+        const VkImage image = ctx.image(h).handle();
+        const VkImageLayout layout = ctx.layout(h);
+        // Slices, then rows over the guard slice just written, then columns over both:
+        // each reads the guards before it, which fills the edges and corners.
+        for (size_t axis = 0; axis < copies.perAxis.size(); ++axis) {
+          if (axis > 0)
+            gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                               VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                               VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+          const std::vector<VkImageCopy>& regions = copies.perAxis[axis];
+          vkCmdCopyImage(ctx.cmd(), image, layout, image, layout, uint32_t(regions.size()), regions.data());
+        }
+        ctx.addWork(WorkUnit::TransferBytes, 2u * texelBytes * copies.texels);
+      }
+      committed();  // the last pass of a voxelizing frame
     };
   });
 }

@@ -4,7 +4,8 @@
 //
 // Per frame:
 //   AfterGBuffer     VXGI.Constants, VXGI.Voxelize.Ln / Resolve.Ln / Downsample.Ln,
-//                    VXGI.MipList / Mips — only what the scene and camera movement call for
+//                    VXGI.MipList / Mips / ClipGuards — only what the scene and camera
+//                    movement call for
 //   IndirectDiffuse  VXGI.DiffuseTracing (+ VXGI.DiffuseInterpolation when sparse),
 //                    VXGI.SpecularTracing — publish the GI channels
 //   DebugView        VXGI.DebugVoxels / VXGI.DebugChannel while r.VXGI.DebugMode ≠ 0

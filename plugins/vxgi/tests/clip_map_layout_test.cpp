@@ -24,12 +24,33 @@ TEST(ClipMapFormat, MemoryFollowsTheSeedsFormulaWithOpacityInsideEachDirection) 
   ClipMapFormat large{.mapSize = 256, .stackLevels = 5, .sixDirections = true, .emittanceFp16 = true};
   EXPECT_EQ(large.bytesPerVoxel(), 48u);
   EXPECT_EQ(large.clipBytes(), 5ull * 256 * 257 * 257 * 48);  // 4.06 GB against the seed's 4.70
-  // Mips: size/2 … 1, an eighth of the voxels per step.
-  uint64_t mipVoxels = 0;
-  for (uint32_t s = 128; s >= 1; s /= 2) mipVoxels += uint64_t(s) * s * s;
-  EXPECT_EQ(large.mipBytes(), mipVoxels * 48);
+  // Mips: size/2 … 1, in a slab of size/2 + 1 slices after the levels (mip 0 and its guard).
+  EXPECT_EQ(large.mipBytes(), 256ull * 257 * 129 * 48);
   EXPECT_EQ(large.mipCount(), 8u);
   EXPECT_EQ(large.bytes(), large.clipBytes() + large.mipBytes());
+}
+
+TEST(ClipMapFormat, PyramidMipsAndTheirGuardsFitTheSlabWithoutOverlapping) {
+  // Each mip with its guard column, row and slice, (size + 1)³ texels at mipOrigin, must
+  // lie inside one sign's rows of the slab after the levels, apart from every other mip:
+  // an overlap would let one mip's writes or guard copies overwrite another's texels.
+  for (uint32_t n : {32u, 64u, 128u, 256u}) {
+    ClipMapFormat f{.mapSize = n, .stackLevels = 3};
+    const glm::ivec3 slabMin(0, 0, int(f.stackLevels * f.levelSlices()));
+    const glm::ivec3 slabMax = slabMin + glm::ivec3(int(n), int(f.levelSlices()), int(f.mipSlices()));
+    std::vector<std::pair<glm::ivec3, glm::ivec3>> boxes;
+    for (uint32_t m = 0; m < f.mipCount(); ++m) {
+      EXPECT_EQ(f.mipSize(m), n >> (m + 1));
+      const glm::ivec3 lo = f.mipOrigin(m), hi = lo + glm::ivec3(int(f.mipSize(m)) + 1);
+      EXPECT_TRUE(glm::all(glm::greaterThanEqual(lo, slabMin)) && glm::all(glm::lessThanEqual(hi, slabMax)))
+          << "mip " << m << " of " << n;
+      for (const auto& [otherLo, otherHi] : boxes)
+        EXPECT_FALSE(glm::all(glm::lessThan(lo, otherHi)) && glm::all(glm::lessThan(otherLo, hi)))
+            << "mip " << m << " of " << n << " overlaps one before it";
+      boxes.emplace_back(lo, hi);
+    }
+    EXPECT_EQ(f.mipSize(f.mipCount() - 1), 1u);
+  }
 }
 
 TEST(ClipMapTextures, AllocateExactlyTheFormula) {

@@ -49,25 +49,20 @@ layout(std430, binding = 0) readonly buffer VxgiClipMap {
 #endif
 #if VXGI_CLIP_MAP_TEXTURES
 // Clipped levels stacked along Z (each with its guard slice), facing signs along Y (each
-// with its guard row), and the mip pyramid of the coarsest level (toroidal too: sampled
-// with wrap-around). With emittance, clip texture a holds the facing directions ±a
-// (+X +Y +Z; the sign stacked in Y), and pyramid texture d facing direction d (+X +Y +Z −X
-// −Y −Z): rgb radiance × density, a density. In ambient-occlusion mode texture i (both)
-// holds the densities of facing directions 3i..3i+2.
+// with its guard row), and after the levels a slab with the mip pyramid of the coarsest
+// level (vxgiMipOrigin; toroidal too, each mip with its own guards). With emittance,
+// texture a holds the facing directions ±a (+X +Y +Z; the sign stacked in Y): rgb
+// radiance × density, a density. In ambient-occlusion mode texture i holds the densities
+// of facing directions 3i..3i+2. One texture per slot for levels and pyramid alike: a
+// cone step's two fetches per slot come from one sampler whichever levels it blends (a
+// CPU device runs every side of a branch between samplers, fetches included: the pyramid's
+// own textures cost every step of every cone 12 fetches for the 6 it used).
 layout(binding = 1) uniform sampler3D voxelsClip0;
-layout(binding = 9) uniform sampler3D voxelsMip0;
 #if VXGI_DIRECTIONS == 6 || !VXGI_AO_MODE
 layout(binding = 2) uniform sampler3D voxelsClip1;
-layout(binding = 10) uniform sampler3D voxelsMip1;
 #endif
 #if !VXGI_AO_MODE
 layout(binding = 3) uniform sampler3D voxelsClip2;
-layout(binding = 11) uniform sampler3D voxelsMip2;
-#if VXGI_DIRECTIONS == 6
-layout(binding = 12) uniform sampler3D voxelsMip3;
-layout(binding = 13) uniform sampler3D voxelsMip4;
-layout(binding = 14) uniform sampler3D voxelsMip5;
-#endif
 #endif
 
 #endif  // VXGI_CLIP_MAP_TEXTURES (declarations)
@@ -113,6 +108,22 @@ ivec3 vxgiStorageTexel(ivec3 t, int level, int sign) {
   return t + ivec3(0, sign, level) * vxgiLevelSlices();
 }
 
+// The mip pyramid of the coarsest level (mip m: mapSize / 2^(m+1) voxels per side, each
+// 2^(m+1) of the coarsest level's) lies in a slab of mapSize / 2 + 1 slices after the
+// levels, in every sign's rows: mip 0 at x = 0, the others beside it along X, one above
+// the other along Y. Each mip is followed by its guard column, row and slice (copies of
+// 0, by VXGI.ClipGuards) so one trilinear fetch spans its toroidal seams by hand, as the
+// levels' guards do. Storage level k (vxgiStackCoord): the clipped levels, then the mips.
+int vxgiMipCount() { return findLSB(clipMap.mapSize); }
+int vxgiStorageLevels() { return clipMap.levelCount + vxgiMipCount(); }
+int vxgiMipSize(int mip) { return clipMap.mapSize >> (mip + 1); }
+ivec3 vxgiMipOrigin(int mip) {
+  int n = clipMap.mapSize, halfSize = n >> 1, z = clipMap.levelCount * vxgiLevelSlices();
+  // Mips 1..m−1 above mip m's place: Σ (n / 2^(j+1) + 1) = n/2 − n/2^m + m − 1.
+  return mip == 0 ? ivec3(0, 0, z) : ivec3(halfSize + 1, halfSize - (n >> mip) + mip - 1, z);
+}
+ivec3 vxgiMipTexel(ivec3 t, int mip, int sign) { return vxgiMipOrigin(mip) + t + ivec3(0, sign * vxgiLevelSlices(), 0); }
+
 // Writers of a clipped level store each voxel once; the guard copies of row and slice 0
 // (at y = mapSize and z = mapSize, which let one trilinear fetch span the toroidal seams:
 // clip_map_layout.h) are copied afterwards by the VXGI.ClipGuards pass. Stores under
@@ -121,30 +132,26 @@ ivec3 vxgiStorageTexel(ivec3 t, int level, int sign) {
 #define VXGI_STORE_CLIP(image, t, level, sign, value) imageStore(image, vxgiStorageTexel(t, level, sign), value);
 
 #if VXGI_CLIP_MAP_TEXTURES
-// Where world position p is in the stacked textures of a clipped level, for facing sign
-// 0 (add vxgiSignOffset for sign 1): X as it is (the sampler wraps it), Y and Z wrapped
-// into the level's block by hand. With a wrapped texel-centre coordinate in
-// [0, mapSize), a trilinear fetch reads rows (slices) y and y + 1 ≤ mapSize, the guard at
-// the seam: one fetch per texture, never crossing into the next sign or level.
-vec3 vxgiClipCoord(vec3 p, int level) {
-  vec3 u = p / vxgiVoxelSize(level) - 0.5;  // voxel-centre coordinates
-  int n = clipMap.mapSize;
-  vec2 yz = floor(u.yz);
-  vec2 wrapped = vec2(ivec2(yz) & ivec2(n - 1)) + (u.yz - yz);
-  float rows = float(vxgiLevelSlices());
-  return vec3((u.x + 0.5) / float(n), (wrapped.x + 0.5) / (rows * float(VXGI_SIGNS)),
-              (float(level) * rows + wrapped.y + 0.5) / (rows * float(clipMap.levelCount)));
+// Where world position p is in the stacked textures at storage level k (a clipped level,
+// or mip k − levelCount of the pyramid), for facing sign 0 (add vxgiSignOffset for sign
+// 1): wrapped into the level's or mip's block by hand (X of a clipped level by the
+// sampler). With a wrapped texel-centre coordinate in [0, size), a trilinear fetch reads
+// texels i and i + 1 ≤ size, the guard at the seam: one fetch, never crossing into the
+// next block. Arithmetic and selects only, so both kinds of level cost the same.
+vec3 vxgiStackCoord(vec3 p, int k) {
+  int n = clipMap.mapSize, levels = clipMap.levelCount, rows = vxgiLevelSlices();
+  bool mip = k >= levels;
+  int m = max(k - levels, 0);
+  int size = mip ? vxgiMipSize(m) : n;
+  vec3 u = p / vxgiVoxelSize(k) - 0.5;  // voxel-centre coordinates
+  vec3 f = floor(u);
+  vec3 wrapped = vec3(ivec3(f) & ivec3(size - 1)) + (u - f);
+  vec3 origin = vec3(mip ? vxgiMipOrigin(m) : ivec3(0, 0, k * rows));
+  return (origin + wrapped + 0.5) / vec3(float(n), float(rows * VXGI_SIGNS), float(levels * rows + (n >> 1) + 1));
 }
 
-// What moves a vxgiClipCoord from facing sign 0 to sign 1 (normalised Y).
+// What moves a vxgiStackCoord from facing sign 0 to sign 1 (normalised Y).
 float vxgiSignOffset() { return 1.0 / float(VXGI_SIGNS); }
-
-// A sample of the mip pyramid at world position p and mip `mip` (fractional: the
-// hardware blends mips). The pyramid repeats with the coarsest level's extent.
-vec3 vxgiMipCoord(vec3 p) {
-  float extent = vxgiVoxelSize(clipMap.levelCount - 1) * float(clipMap.mapSize);
-  return p / extent;
-}
 
 // What light travelling along −r (towards a cone marching along r) meets in a voxel:
 // surfaces facing −r. Both parts are linear in the stored values, so filtering, level
@@ -182,34 +189,34 @@ VxgiSample vxgiCombine(vec3 r, vec4 x, vec4 y, vec4 z) {
 // Filtered fetches taken by this invocation (work reports, bounce/work_counters.glsl).
 uint vxgiFetches = 0u;
 
-// Which levels a footprint of diameter d at p reads: the level whose voxels match it,
-// blended with the next coarser one (quadrilinear), or beyond the clipped levels the
-// coarsest level blended with the mip pyramid, whose mip m has voxels 2^(m+1) times the
+// Which levels a footprint of diameter d at p reads: the storage level (vxgiStackCoord)
+// whose voxels match it, blended with the next coarser one (quadrilinear); past the
+// clipped levels those are the pyramid's mips, whose mip m has voxels 2^(m+1) times the
 // coarsest level's. Where p lies outside the levels fine enough for d, the finest level
 // holding p alone, and the footprint grows to its voxel: the footprint the sample's
 // density is per (a caller stepping by the smaller one would count the same coarse
 // voxel's optical depth several times over). False outside the clip-map.
 struct VxgiLevels {
-  int level;    // the finer of the two blended levels
-  float blend;  // weight of the coarser one: level + 1, or the pyramid at `mip`
-  float mip;    // pyramid mip (fractional: the hardware blends mips), when level is the coarsest
+  int level;    // storage level of the finer of the two blended ones
+  int coarser;  // the other: level + 1, or level itself at the pyramid's 1³ top
+  float blend;  // weight of the coarser one
   float used;   // footprint the blended value is per
 };
 bool vxgiChooseLevels(vec3 p, float d, out VxgiLevels c) {
   c.used = max(d, clipMap.voxelSize0);
   float lod = log2(c.used / clipMap.voxelSize0);
-  int last = clipMap.levelCount - 1;
-  int level = min(int(floor(lod)), last);
-  float blend = fract(lod);
-  c.level = vxgiFinestLevelAt(p, level);
+  int last = clipMap.levelCount - 1, top = vxgiStorageLevels() - 1;
+  int level = min(int(floor(lod)), top);
+  c.blend = level < top ? fract(lod) : 0.0;
+  c.level = vxgiFinestLevelAt(p, min(level, last));
   if (c.level < 0) return false;
   if (c.level > level) {  // p is past the finer level's edge: the coarser alone
-    blend = 0.0;
+    c.blend = 0.0;
     c.used = vxgiVoxelSize(c.level);
+  } else {
+    c.level = max(c.level, level);  // the pyramid, inside the coarsest level
   }
-  float mip = lod - float(last) - 1.0;
-  c.mip = max(mip, 0.0);
-  c.blend = c.level < last ? blend : clamp(mip + 1.0, 0.0, 1.0);
+  c.coarser = min(c.level + 1, top);
   return true;
 }
 
@@ -234,17 +241,10 @@ bool vxgiChooseLevels(vec3 p, float d, out VxgiLevels c) {
 #endif
 const uint VXGI_FETCHES_PER_SAMPLE = uint(VXGI_DIRECTIONS / 3);
 
-VxgiSample vxgiSampleClip(vec3 p, int level, vec3 r) {
+VxgiSample vxgiSampleStack(vec3 p, int k, vec3 r) {
   vxgiFetches += VXGI_FETCHES_PER_SAMPLE;
   VxgiSample s;
-  VXGI_FETCH_FACING(Clip, vxgiClipCoord(p, level), 0.0, r, s)
-  return s;
-}
-
-VxgiSample vxgiSampleMip(vec3 p, float mip, vec3 r) {
-  vxgiFetches += VXGI_FETCHES_PER_SAMPLE;
-  VxgiSample s;
-  VXGI_FETCH_FACING(Mip, vxgiMipCoord(p), mip, r, s)
+  VXGI_FETCH_FACING(Clip, vxgiStackCoord(p, k), 0.0, r, s)
   return s;
 }
 
@@ -258,8 +258,7 @@ VxgiSample vxgiSample(vec3 p, inout float diameter, vec3 r, out bool valid) {
   valid = vxgiChooseLevels(p, diameter, c);
   if (!valid) return s;
   diameter = c.used;
-  VxgiSample a = vxgiSampleClip(p, c.level, r);
-  VxgiSample b = c.level < clipMap.levelCount - 1 ? vxgiSampleClip(p, c.level + 1, r) : vxgiSampleMip(p, c.mip, r);
+  VxgiSample a = vxgiSampleStack(p, c.level, r), b = vxgiSampleStack(p, c.coarser, r);
   s.emittance = mix(a.emittance, b.emittance, c.blend);
   s.density = mix(a.density, b.density, c.blend);
   return s;
@@ -298,20 +297,14 @@ VxgiConeStart vxgiConeStart(vec3 r, vec3 apex, vec3 n, float surfaceDistance) {
   return c;
 }
 
-#if VXGI_DIRECTIONS == 6
-#define VXGI_MIP_SLOT(pos, neg, c, mip, w) mix(textureLod(pos, c, mip), textureLod(neg, c, mip), w)
-#else
-#define VXGI_MIP_SLOT(pos, neg, c, mip, w) textureLod(pos, c, mip)
-#endif
 // Where the coarser of a slot's two levels is read, for voxels of edge v there. A
 // trilinear fetch weighs voxel centres up to v away, each holding what lies up to v/2
 // further: 1.5 v. The cut (vxgiClipToApex) sizes the filter by the footprint, which the
-// coarser level's voxels exceed by up to 2× (and a fractional pyramid mip's upper mip by
-// up to 4×), so that fetch still reached behind the cone's apex: with 1.1 m voxels at
-// the defaults' coarsest level it read a 10 cm wall's sunlit outer face through the wall
-// from a metre into the room (the window walls of the sunlit rooms 2.4–4.9× the path
-// tracer, the worst wall 7.5×; vxgi README). So that one fetch moves forward until its
-// reach clears two planes:
+// coarser level's voxels exceed by up to 2×, so that fetch still reached behind the
+// cone's apex: with 1.1 m voxels at the defaults' coarsest level it read a 10 cm wall's
+// sunlit outer face through the wall from a metre into the room (the window walls of the
+// sunlit rooms 2.4–4.9× the path tracer, the worst wall 7.5×; vxgi README). So that one
+// fetch moves forward until its reach clears two planes:
 //  - the apex's plane across the cone's main axis, when the slot is that axis (what a
 //    slot along a minor axis would move is the cone's side: a sideways move reads beside
 //    the cone, and a 2 cm emitter's floor lost a fifth of its light that way);
@@ -330,12 +323,12 @@ vec3 vxgiCoarsePosition(vec3 p, VxgiConeStart cone, int axis, float v) {
   return p + cone.normal * max(below, 0.0);
 }
 
-// One facing slot (texture `clip` of the stack, `mipPos`/`mipNeg` of the pyramid) at
-// footprint d around p, from the levels vxgiChooseLevels picks; the coarser one read at
-// vxgiCoarsePosition. `used`: the footprint the value is per (wider than d where p lies
-// outside the finer levels). A macro because GLSL cannot pass samplers chosen at run
-// time without a branch per fetch (a CPU device runs every side of it).
-#define VXGI_DEFINE_SLOT(name, clip, mipPos, mipNeg, axis)                                   \
+// One facing slot (texture `clip`) at footprint d around p, from the levels
+// vxgiChooseLevels picks (clipped levels or mips alike: two fetches of one texture); the
+// coarser one read at vxgiCoarsePosition. `used`: the footprint the value is per (wider
+// than d where p lies outside the finer levels). A macro because GLSL cannot pass a
+// sampler chosen at run time.
+#define VXGI_DEFINE_SLOT(name, clip, axis)                                                 \
   vec4 name(vec3 p, float d, VxgiConeStart cone, out float used) {                         \
     VxgiLevels c;                                                                          \
     used = max(d, clipMap.voxelSize0);                                                     \
@@ -343,25 +336,16 @@ vec3 vxgiCoarsePosition(vec3 p, VxgiConeStart cone, int axis, float v) {
     used = c.used;                                                                         \
     float positive = cone.direction[axis] > 0.0 ? 1.0 : 0.0;                               \
     vec3 signOffset = vec3(0.0, positive * vxgiSignOffset() * float(VXGI_SIGNS - 1), 0.0);  \
-    bool pyramid = c.level == clipMap.levelCount - 1;                                      \
-    vxgiFetches += pyramid ? 1u + uint(VXGI_SIGNS) : 2u; /* the pyramid: both signs */     \
-    vec4 a = textureLod(clip, vxgiClipCoord(p, c.level) + signOffset, 0.0);                \
-    /* The coarser voxels: the next level's, or the pyramid's upper mip of the two the */  \
-    /* hardware blends (mip m has voxels 2^(m+1) × the coarsest level's). */               \
-    float v = vxgiVoxelSize(c.level) * (pyramid ? exp2(ceil(c.mip) + 1.0) : 2.0);          \
-    vec3 q = vxgiCoarsePosition(p, cone, axis, v);                                         \
-    if (!pyramid) return mix(a, textureLod(clip, vxgiClipCoord(q, c.level + 1) + signOffset, 0.0), c.blend); \
-    return mix(a, VXGI_MIP_SLOT(mipPos, mipNeg, vxgiMipCoord(q), c.mip, positive), c.blend); \
+    vxgiFetches += 2u;                                                                     \
+    vec3 q = vxgiCoarsePosition(p, cone, axis, vxgiVoxelSize(c.coarser));                  \
+    /* Two mips are read where the coarser must be: the pair a mipmapped fetch blends. */  \
+    vec3 pa = c.level >= clipMap.levelCount ? q : p;                                       \
+    vec4 a = textureLod(clip, vxgiStackCoord(pa, c.level) + signOffset, 0.0);              \
+    return mix(a, textureLod(clip, vxgiStackCoord(q, c.coarser) + signOffset, 0.0), c.blend); \
   }
-#if VXGI_DIRECTIONS == 6
-VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, voxelsMip0, voxelsMip3, 0)
-VXGI_DEFINE_SLOT(vxgiSlotY, voxelsClip1, voxelsMip1, voxelsMip4, 1)
-VXGI_DEFINE_SLOT(vxgiSlotZ, voxelsClip2, voxelsMip2, voxelsMip5, 2)
-#else
-VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, voxelsMip0, voxelsMip0, 0)
-VXGI_DEFINE_SLOT(vxgiSlotY, voxelsClip1, voxelsMip1, voxelsMip1, 1)
-VXGI_DEFINE_SLOT(vxgiSlotZ, voxelsClip2, voxelsMip2, voxelsMip2, 2)
-#endif
+VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, 0)
+VXGI_DEFINE_SLOT(vxgiSlotY, voxelsClip1, 1)
+VXGI_DEFINE_SLOT(vxgiSlotZ, voxelsClip2, 2)
 
 // How far, in footprints, a sample's filter reaches behind its centre: the finer of the
 // two blended levels reads texels up to one of its voxels away, each holding what lies
