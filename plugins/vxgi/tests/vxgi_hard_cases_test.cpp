@@ -466,5 +466,39 @@ TEST_F(VxgiHardCases, PyramidForgetsWhereAnEmitterLeft) {
   EXPECT_LT(worst, 1e-3 * change);
 }
 
+// A coarser level's inner box holds what downsampling stored there (VXGI_BRICK_DOWNSAMPLED),
+// never what its own resolve stored, so the resolve's "air over air" skip (VxgiVoxelStored)
+// would leave it in place once the box moves on. An emitting test cube (40 cm, 4 cm voxels,
+// levels of 1.28 / 2.56 / 5.12 m) inside level 0 around the first anchor, so level 1 holds it
+// downsampled; then the anchor moves 1.3 m, which takes the cube's place out of level 0 and
+// out of level 1's inner box while keeping it in level 1, and the cube moves with the anchor
+// in the same frame. Where it was must read as air, as in a fresh start at the new anchor.
+// With the resolve skipping such air too (no exemption for downsampled bricks outside the
+// inner box) the moved image read 0.686 W/m² off, against a move that changed it by 0.566
+// (checked).
+TEST_F(VxgiHardCases, DownsampledContentLeftOutsideTheInnerBoxIsCleared) {
+  auto settings = [](const char* anchor, const char* cube) {
+    return with(kSmall, {"r.VXGI.VoxelSize=0.04", "r.VXGI.AnchorMode=Fixed",
+                         std::string("r.VXGI.AnchorPosition=") + anchor, "r.VXGI.ForceFullVoxelization=1",
+                         std::string("r.VXGI.TestCube=") + cube});
+  };
+  auto irradiance = [&] { return render(24, 24, {"indirect-irradiance"}).images.at("indirect-irradiance"); };
+  start("content/tests/lit_floor_and_wall.gltf", settings("0 1.5 0", "0 1.5 0.3 0.4"), "VXGI");
+  const ImageBuffer first = irradiance();
+  irradiance();  // the brick flags and voxel bits learned
+  engine->console().execute("r.VXGI.AnchorPosition 0 1.5 1.3");
+  engine->console().execute("r.VXGI.TestCube 0 1.5 1.3 0.4");
+  const ImageBuffer moved = irradiance();
+  finish();
+  start("content/tests/lit_floor_and_wall.gltf", settings("0 1.5 1.3", "0 1.5 1.3 0.4"), "VXGI");
+  const ImageBuffer fresh = irradiance();
+  finish();
+  const double worst = largestDifference(moved, fresh), change = largestDifference(first, fresh);
+  std::printf("anchor and cube moved: %.6f W/m² from a fresh start (the move changed up to %.4f)\n", worst,
+              change);
+  EXPECT_GT(change, 0.005) << "the move must change the image for the comparison to mean anything";
+  EXPECT_LT(worst, 1e-3 * change);
+}
+
 }  // namespace
 }  // namespace bounce::test
