@@ -123,6 +123,10 @@ ClipMapConstants makeConstants(const ClipMapLayout& layout, float emittanceDecod
   c.mapSize = int32_t(layout.format().mapSize);
   c.levelCount = int32_t(layout.format().stackLevels);
   c.emittanceDecode = emittanceDecode;
+  const ClipMapFormat& f = layout.format();
+  const TextureDesc d = clipDesc(f, VK_FORMAT_R8G8B8A8_UNORM);
+  c.reciprocals = glm::vec4(1.0f / float(d.width), 1.0f / float(d.height), 1.0f / float(d.depth),
+                            1.0f / std::max(layout.voxelSize0(), 1e-30f));
   return c;
 }
 

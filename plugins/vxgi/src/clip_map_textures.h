@@ -104,8 +104,12 @@ struct ClipMapConstants {
   int32_t mapSize;
   int32_t levelCount;
   float emittanceDecode;
+  /// xyz: 1 / the stacked textures' width, height and depth; w: 1 / voxelSize0. Shaders
+  /// multiply by these where they would divide: lavapipe's shader compiler does not hoist
+  /// loop invariants, so a cone step would recompute each division.
+  glm::vec4 reciprocals;
 };
-static_assert(sizeof(ClipMapConstants) == 96);
+static_assert(sizeof(ClipMapConstants) == 112);
 
 ClipMapConstants makeConstants(const ClipMapLayout& layout, float emittanceDecode);
 

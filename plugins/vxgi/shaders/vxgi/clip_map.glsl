@@ -42,6 +42,7 @@ layout(std430, binding = 0) readonly buffer VxgiClipMap {
   int mapSize;                         // voxels per side of a level
   int levelCount;                      // clipped levels
   float emittanceDecode;               // stored emittance × this = radiance (1 / storage scale)
+  vec4 reciprocals;                    // xyz: 1 / the stacked textures' size; w: 1 / voxelSize0
 } clipMap;
 
 #ifndef VXGI_CLIP_MAP_TEXTURES
@@ -67,12 +68,18 @@ layout(binding = 3) uniform sampler3D voxelsClip2;
 
 #endif  // VXGI_CLIP_MAP_TEXTURES (declarations)
 
-float vxgiVoxelSize(int level) { return clipMap.voxelSize0 * float(1 << level); }
+// 2^k, exactly, from its bits (|k| < 127): no conversion or division per lane. A cone step
+// needs a voxel size and its reciprocal per level it reads, and lavapipe's compiler does
+// not hoist anything out of the loop.
+float vxgiExp2(int k) { return intBitsToFloat((k + 127) << 23); }
+float vxgiVoxelSize(int level) { return clipMap.voxelSize0 * vxgiExp2(level); }
+// 1 / vxgiVoxelSize(level), to multiply by.
+float vxgiVoxelsPerMetre(int level) { return clipMap.reciprocals.w * vxgiExp2(-level); }
 
 // True when the trilinear footprint of world position p (all 8 texels) lies inside
 // level `level`, so the sample holds real data for that region.
 bool vxgiInsideLevel(vec3 p, int level) {
-  vec3 u = p / vxgiVoxelSize(level) - 0.5;
+  vec3 u = p * vxgiVoxelsPerMetre(level) - 0.5;
   ivec3 base = ivec3(floor(u)) - clipMap.levelOrigin[level].xyz;
   return all(greaterThanEqual(base, ivec3(0))) && all(lessThan(base, ivec3(clipMap.mapSize - 1)));
 }
@@ -139,15 +146,15 @@ ivec3 vxgiMipTexel(ivec3 t, int mip, int sign) { return vxgiMipOrigin(mip) + t +
 // texels i and i + 1 ≤ size, the guard at the seam: one fetch, never crossing into the
 // next block. Arithmetic and selects only, so both kinds of level cost the same.
 vec3 vxgiStackCoord(vec3 p, int k) {
-  int n = clipMap.mapSize, levels = clipMap.levelCount, rows = vxgiLevelSlices();
+  int levels = clipMap.levelCount, rows = vxgiLevelSlices();
   bool mip = k >= levels;
   int m = max(k - levels, 0);
-  int size = mip ? vxgiMipSize(m) : n;
-  vec3 u = p / vxgiVoxelSize(k) - 0.5;  // voxel-centre coordinates
+  int size = mip ? vxgiMipSize(m) : clipMap.mapSize;
+  vec3 u = p * vxgiVoxelsPerMetre(k) - 0.5;  // voxel-centre coordinates
   vec3 f = floor(u);
   vec3 wrapped = vec3(ivec3(f) & ivec3(size - 1)) + (u - f);
   vec3 origin = vec3(mip ? vxgiMipOrigin(m) : ivec3(0, 0, k * rows));
-  return (origin + wrapped + 0.5) / vec3(float(n), float(rows * VXGI_SIGNS), float(levels * rows + (n >> 1) + 1));
+  return (origin + wrapped + 0.5) * clipMap.reciprocals.xyz;
 }
 
 // What moves a vxgiStackCoord from facing sign 0 to sign 1 (normalised Y).
@@ -204,7 +211,7 @@ struct VxgiLevels {
 };
 bool vxgiChooseLevels(vec3 p, float d, out VxgiLevels c) {
   c.used = max(d, clipMap.voxelSize0);
-  float lod = log2(c.used / clipMap.voxelSize0);
+  float lod = log2(c.used * clipMap.reciprocals.w);
   int last = clipMap.levelCount - 1, top = vxgiStorageLevels() - 1;
   int level = min(int(floor(lod)), top);
   c.blend = level < top ? fract(lod) : 0.0;
