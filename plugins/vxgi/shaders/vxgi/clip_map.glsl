@@ -31,9 +31,13 @@ float vxgiOpacityFromDensity(float density) { return 1.0 - exp(-max(density, 0.0
 // depth per unit density (k = 1: one footprint): what turns stored emittance (radiance ×
 // density) into radiance × opacity. Its limit for a thin medium is finite, so emittance
 // keeps its power even where 8-bit storage rounded the density of a faint voxel to 0.
-float vxgiAlphaPerDensity(float density, float k) {
+// `alpha`: 1 − exp(−x) for x = density × VXGI_MAX_OPTICAL_DEPTH × k, when the caller has it.
+float vxgiAlphaPerDensity(float density, float k, float alpha) {
   float x = max(density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * k;
-  return x > 1e-3 ? (1.0 - exp(-x)) / max(density, 1e-30) : VXGI_MAX_OPTICAL_DEPTH * k * (1.0 - 0.5 * x);
+  return x > 1e-3 ? alpha / max(density, 1e-30) : VXGI_MAX_OPTICAL_DEPTH * k * (1.0 - 0.5 * x);
+}
+float vxgiAlphaPerDensity(float density, float k) {
+  return vxgiAlphaPerDensity(density, k, 1.0 - exp(-max(density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * k));
 }
 
 layout(std430, binding = 0) readonly buffer VxgiClipMap {

@@ -127,13 +127,15 @@ ConeTracingResults TraceCone(ConeTracingArguments args) {
     // step (step / diameter footprints), so occlusion stays right in thick media.
     float step = stepFactor * max(diameter, cone);
     // Beer–Lambert over this step: the sample's density is optical depth per footprint.
-    float alpha = 1.0 - exp(-max(s.density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * (step / diameter));
+    float footprints = step / diameter;
+    float alpha = 1.0 - exp(-max(s.density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * footprints);
     // What the step emits towards the cone apex: mean radiance L = emittance / density
     // times α. Written as emittance × α/density, it needs no division by a density that
     // 8-bit storage may have rounded to zero: a bright source much smaller than a voxel
     // keeps its power at every level, where its opacity alone rounds away (one step of
     // stored density is 3.5% opacity).
-    radiance += (1.0 - opacity) * vxgiAlphaPerDensity(s.density, step / diameter) * max(s.emittance, vec3(0.0));
+    // (The same α: lavapipe's compiler would not share the exponential.)
+    radiance += (1.0 - opacity) * vxgiAlphaPerDensity(s.density, footprints, alpha) * max(s.emittance, vec3(0.0));
     if (t <= args.ambientRange) ambientOpacity += (1.0 - ambientOpacity) * alpha;
     opacity += (1.0 - opacity) * alpha;
     t += step;
