@@ -379,6 +379,23 @@ def white_furnace():
     return s
 
 
+def glossy_furnace():
+    """The white furnace with a glossy floor (roughness 0.2, a specular lobe), seen from above:
+    every direction sees the walls' emission, so the floor's indirect specular radiance is
+    that emission, and the Lambert walls trace none."""
+    s = GltfScene("closed emissive room, glossy floor: its mirror direction sees radiance 1 of emission")
+    wall = s.material("FurnaceWall", (FURNACE_ALBEDO,) * 3, emissive=FURNACE_EMISSION, extras=VOXELIZE_FLAG)
+    floor = s.material("GlossyFloor", (FURNACE_ALBEDO,) * 3, roughness=0.2, lambert=False,
+                       emissive=FURNACE_EMISSION, extras=VOXELIZE_FLAG)
+    r = ROOM_SIZE / 2
+    for name, geometry, center in closed_room(-r, r, WALL_THICKNESS):
+        s.object(name, geometry, floor if name == "Floor" else wall, center)
+    # 45° down towards −z from above the middle: mostly floor, the back wall at the top.
+    s.camera("Down", (0, 0.75 * ROOM_SIZE, 0.3 * ROOM_SIZE), rotation=(-0.38268343, 0.0, 0.0, 0.92387953),
+             yfov=1.0)
+    return s
+
+
 def two_rooms_thin_wall():
     s = GltfScene("two closed rooms sharing a 2 cm wall; light only in the left one")
     wall = s.material("Wall", (TWO_ROOMS_ALBEDO,) * 3, extras=VOXELIZE_FLAG)
@@ -541,6 +558,7 @@ def main():
     lambert_plane_point(occluded=True).write(os.path.join(tests, "shadowed_plane_point.gltf"))
     emissive_quad().write(os.path.join(tests, "emissive_quad.gltf"))
     white_furnace().write(os.path.join(tests, "white_furnace.gltf"))
+    glossy_furnace().write(os.path.join(tests, "glossy_furnace.gltf"))
     two_rooms_thin_wall().write(os.path.join(tests, "two_rooms_thin_wall.gltf"))
     cornell_box(flagged=False).write(os.path.join(tests, "no_flagged_materials.gltf"))
     hdr_emitter().write(os.path.join(tests, "hdr_emitter.gltf"))

@@ -254,6 +254,10 @@ void Engine::registerEngineVariables() {
   aovs_.add({"indirect-irradiance", std::string(channels::IndirectDiffuse), 3,
              "indirect diffuse irradiance E at the visible surface before albedo, W/m² (0 without GI)"},
             kEngineOwner, "engine");
+  aovs_.add({"indirect-specular", std::string(channels::IndirectSpecular), 3,
+             "indirect specular: incident radiance from the reflected direction, pre-filtered by roughness, "
+             "W/(m²·sr) (0 without GI or where a technique traces none)"},
+            kEngineOwner, "engine");
   aovs_.add({"albedo", std::string(channels::GBufferBaseColor), 3, "linear base colour"}, kEngineOwner,
             "engine");
   aovs_.add({"normal", std::string(channels::GBufferNormalRoughness), 3, "world-space unit normal"},

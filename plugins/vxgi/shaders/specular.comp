@@ -1,21 +1,25 @@
 #version 460
-// Specular tracing: one cone along the mirror direction for pixels below the roughness
-// threshold. Its aperture follows the GGX lobe (diameter factor 2α, α = roughness²)
-// but never goes below the floor the voxel resolution allows. Output: the incident
-// radiance from the reflected direction (W/(m²·sr)) × intensity.
+// Specular tracing: one cone along the mirror direction for each pixel specular_list.comp
+// listed (below the roughness threshold, specular or metal; it cleared the others). Its
+// aperture follows the GGX lobe (diameter factor 2α, α = roughness²) but never goes below
+// the floor the voxel resolution allows. Output: the incident radiance from the reflected
+// direction (W/(m²·sr)) × intensity.
 #include "tracing_common.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 64) in;
 layout(binding = 23, rgba16f) uniform writeonly image2D outTraced;
+layout(std430, binding = 24) readonly buffer VxgiSpecularPixels {
+  uvec4 arguments;  // w: pixels listed
+  uint pixels[];    // x | y << 16
+};
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, pc.sizes.xy))) return;
+  uint index = gl_GlobalInvocationID.x;
+  if (index >= arguments.w) return;
+  ivec2 pixel = ivec2(pixels[index] & 0xffffu, pixels[index] >> 16);
   vec3 P, N;
   float roughness;
-  vec4 material = texelFetch(gMaterial, pixel, 0);
-  bool specular = material.g > 0.0 || material.r > 0.0;  // specular factor or metallic
-  if (!surfaceAt(pixel, P, N, roughness) || roughness >= pc.extra.y || !specular) {
+  if (!surfaceAt(pixel, P, N, roughness)) {  // listed, so a surface: kept for safety
     imageStore(outTraced, pixel, vec4(0.0));
     return;
   }

@@ -1,5 +1,6 @@
 #include "vxgi_passes.h"
 
+#include <bounce/gpu/barriers.h>
 #include <bounce/gpu/pass_context.h>
 #include <bounce/graph/channels.h>
 
@@ -185,13 +186,7 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
   specularPush.tracing.x = frame.setting(s.specularIntensity);
   const bool specularOn = s.specularEnable.get();
   const float threshold = s.specularRoughnessThreshold.get();
-  graph.addPass("VXGI.SpecularTracing", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    const GBufferInputs gbuffer = GBufferInputs::read(b, bb);
-    const ClipMapHandles h = ClipMapTextures::readSampled(b, handles);
-    TextureHandle out =
-        b.write(b.createTexture("VXGI.Specular", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
-                Access::StorageWrite);
-    bb.setTexture(channels::IndirectSpecular, out);
+  auto specularConditions = [&](PassBuilder& b) {
     b.condition(needsVoxels);
     b.condition([specularOn] {
       return specularOn ? PassDecision::run("specular tracing on")
@@ -202,13 +197,52 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
                  ? PassDecision::run(fmt::format("specular materials below roughness {}", threshold))
                  : PassDecision::skip(fmt::format("no specular material below roughness {}", threshold));
     });
+  };
+  // The pixels to trace, listed (specular_list.comp), so that the tracing's lanes are all
+  // specular pixels: on lavapipe an untraced lane costs as much as a traced one.
+  TextureHandle specular;
+  BufferHandle specularPixels;
+  graph.addPass("VXGI.SpecularPixels", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const GBufferInputs gbuffer = GBufferInputs::read(b, bb);
+    specular =
+        b.write(b.createTexture("VXGI.Specular", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
+                Access::StorageWrite);
+    const uint64_t pixels = uint64_t(frame.view.width) * frame.view.height;
+    specularPixels =
+        b.write(b.createBuffer("VXGI.SpecularPixels", {sizeof(glm::uvec4) + pixels * sizeof(uint32_t)}),
+                Access::StorageReadWrite);
+    specularConditions(b);
+    TextureHandle out = specular;
+    BufferHandle list = specularPixels;
+    return [=](PassContext& ctx) {
+      const glm::uvec4 noGroups(0u, 1u, 1u, 0u);  // x: workgroups, w: pixels listed
+      vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(list).handle(), 0, sizeof(noGroups), &noGroups);
+      gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "specular_list.comp", format));
+      gpu::Bindings bind;
+      gbuffer.bind(bind);
+      bind.storage("outTraced", out).buffer("VxgiSpecularPixels", list);
+      ctx.dispatchThreads(pipeline, bind, {specularPush.sizes.x, specularPush.sizes.y, 1}, specularPush);
+    };
+  });
+  graph.addPass("VXGI.SpecularTracing", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+    const GBufferInputs gbuffer = GBufferInputs::read(b, bb);
+    const ClipMapHandles h = ClipMapTextures::readSampled(b, handles);
+    BufferHandle arguments = b.read(specularPixels, Access::Indirect);
+    BufferHandle list = b.read(specularPixels, Access::StorageRead);
+    // The listed pixels; the list pass cleared the others.
+    TextureHandle out = b.write(specular, Access::StorageReadWrite);
+    bb.setTexture(channels::IndirectSpecular, out);
+    specularConditions(b);
     return [=](PassContext& ctx) {
       const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "specular.comp", format));
       gpu::Bindings bind;
       ClipMapTextures::bindSampled(bind, h);
       gbuffer.bind(bind);
-      bind.storage("outTraced", out);
-      ctx.dispatchThreads(pipeline, bind, {specularPush.sizes.x, specularPush.sizes.y, 1}, specularPush);
+      bind.storage("outTraced", out).buffer("VxgiSpecularPixels", list);
+      ctx.dispatchIndirect(pipeline, bind, arguments, specularPush);
     };
   });
 }

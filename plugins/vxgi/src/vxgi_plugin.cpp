@@ -7,7 +7,7 @@
 //                    VXGI.MipList / Mips / ClipGuards — only what the scene and camera
 //                    movement call for
 //   IndirectDiffuse  VXGI.DiffuseTracing (+ VXGI.DiffuseInterpolation when sparse),
-//                    VXGI.SpecularTracing — publish the GI channels
+//                    VXGI.SpecularPixels / SpecularTracing — publish the GI channels
 //   DebugView        VXGI.DebugVoxels / VXGI.DebugChannel while r.VXGI.DebugMode ≠ 0
 
 #include "clip_map_textures.h"

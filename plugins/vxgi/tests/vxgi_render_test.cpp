@@ -35,6 +35,71 @@ TEST_F(VxgiRender, WhiteFurnaceReadsEmissionTimesOnePlusAlbedo) {
   EXPECT_NEAR(e.mean, M_PI, M_PI * 0.01);
 }
 
+TEST_F(VxgiRender, GlossyFloorReflectsTheFurnaceAndOnlyItTraces) {
+  // The furnace with a glossy floor (roughness 0.2): its mirror direction ends on a wall of
+  // radiance Le = 1 whichever way it points, so indirect specular reads Le on the floor.
+  // Specular tracing runs over the pixels specular_list.comp listed; the Lambert walls are
+  // not traced and must read exactly 0. Checked: without the list pass's clear the walls read
+  // the first frame's 2; with a workgroup too few for the list, pixels next to the walls did.
+  start("content/tests/glossy_furnace.gltf", with(kSmall, {"r.VXGI.MapSize=64"}), "VXGI");
+  // First a frame looking straight down at twice the intensity: all floor, every pixel
+  // traced at about 2. Where the next frame's list misses a pixel or its clear does, what
+  // it reads would be this frame's, if the memory is reused, or undefined.
+  Camera down = engine->scene()->cameras().front();
+  down.world =
+      glm::inverse(glm::lookAt(glm::vec3(0.0f, 1.5f, 0.0f), glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f)));
+  engine->console().execute("r.VXGI.SpecularIntensity 2");
+  render(FrameView::fromCamera(down, 32, 32), {"indirect-specular"});
+  engine->console().execute("r.VXGI.SpecularIntensity 1");
+  RenderedFrame f = render(32, 32, {"indirect-specular", "normal"});
+  ASSERT_TRUE(f.graph.executed("VXGI.SpecularPixels"));
+  ASSERT_TRUE(f.graph.executed("VXGI.SpecularTracing"));
+  const ImageBuffer &specular = f.images.at("indirect-specular"), &normal = f.images.at("normal");
+  // Floor pixels two or more pixels (about 3 voxels) from any wall: next to a wall the
+  // cone starts among the wall's voxels (the corners read 0.06–0.98, printed).
+  auto isFloor = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < 32 && y < 32 && normal.at(uint32_t(x), uint32_t(y), 1) > 0.9f;
+  };
+  int floor = 0, walls = 0;
+  double lo = 1e30, hi = -1e30, edgeLo = 1e30, edgeHi = -1e30, wallMax = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) {
+      const float ny = normal.at(uint32_t(x), uint32_t(y), 1),
+                  value = specular.at(uint32_t(x), uint32_t(y), 1);
+      for (uint32_t c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(specular.at(uint32_t(x), uint32_t(y), c)));
+      bool inner = true;
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) inner = inner && isFloor(x + dx, y + dy);
+      if (inner) {
+        ++floor;
+        lo = std::min(lo, double(value));
+        hi = std::max(hi, double(value));
+      } else if (ny > 0.9f) {
+        edgeLo = std::min(edgeLo, double(value));
+        edgeHi = std::max(edgeHi, double(value));
+      } else if (std::abs(ny) < 0.1f) {
+        ++walls;
+        for (uint32_t c = 0; c < 3; ++c)
+          wallMax = std::max(wallMax, double(std::abs(specular.at(uint32_t(x), uint32_t(y), c))));
+      }
+    }
+  std::printf(
+      "glossy floor (%d px): indirect specular %.4f..%.4f (next to the walls %.4f..%.4f); Lambert "
+      "walls (%d px) up to %g\n",
+      floor, lo, hi, edgeLo, edgeHi, walls, wallMax);
+  ASSERT_GT(floor, 200);
+  ASSERT_GT(walls, 50);
+  // Every floor pixel within 2% of Le: a cone that stops at 99.5% opacity is renormalised
+  // (TraceCone), and RGBA16F storage rounds to 0.05%.
+  EXPECT_NEAR(lo, 1.0, 0.02);
+  EXPECT_NEAR(hi, 1.0, 0.02);
+  EXPECT_EQ(wallMax, 0.0);
+  // Next to the walls too, every floor pixel was traced this frame: above 0 (a cone in a
+  // closed furnace gathers something) and not the first frame's 2.
+  EXPECT_GT(edgeLo, 0.01);
+  EXPECT_LE(edgeHi, 1.01);
+}
+
 TEST_F(VxgiRender, NoFlaggedMaterialCullsEveryPassAndMatchesNoGi) {
   start("content/tests/no_flagged_materials.gltf", with(kSmall, {"Material.UsedWithVxgiVoxelization=0"}),
         "VXGI");
