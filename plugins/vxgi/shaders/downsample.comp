@@ -79,8 +79,9 @@ vec4 downsampleFacing(vec4 child[8], int d) {
     float aLo = vxgiOpacityFromDensity(child[lo].a), aHi = vxgiOpacityFromDensity(child[hi].a);
     // Radiance × opacity: stored emittance × α/density, which stays finite and keeps a
     // faint voxel's light where its stored density rounded to 0 (clip_map.glsl).
-    vec3 lLo = child[lo].rgb * vxgiAlphaPerDensity(child[lo].a, 1.0);
-    vec3 lHi = child[hi].rgb * vxgiAlphaPerDensity(child[hi].a, 1.0);
+    // (The opacities just computed: lavapipe's compiler would not share the exponentials.)
+    vec3 lLo = child[lo].rgb * vxgiAlphaPerDensity(child[lo].a, 1.0, aLo);
+    vec3 lHi = child[hi].rgb * vxgiAlphaPerDensity(child[hi].a, 1.0, aHi);
     a += 1.0 - (1.0 - aLo) * (1.0 - aHi);
 #if VXGI_DIRECTIONS == 6
     e += towardsPositive ? lHi + (1.0 - aHi) * lLo : lLo + (1.0 - aLo) * lHi;
