@@ -440,14 +440,16 @@ void Viewer::renderAndPresent() {
   } else if (factor != refinement_.factor()) {
     // A still view keeps its factor (a new one starts the refinement over, and the frames'
     // cost does not change while nothing moves) unless its frames stay far from the budget
-    // (beyond ×2 or ÷2) for kFarOffFrames in a row, and never once it is complete: the
+    // (beyond ×4/3 or ÷2) for kFarOffFrames in a row, and never once it is complete: the
     // first frames of a scene are slow, and the factor picked then must not stick, but a
     // few frames slowed by the machine must not throw the refinement away (at the default
     // window, with ×1.5 and any one frame, a still image 3.7% from bounce-render's went
-    // back to 6–9%).
+    // back to 6–9%). ×4/3 of the default 150 ms is 5 frames/s: with ×2, once tracing got
+    // faster, a view kept the 25% it started at with frames of 214–240 ms (4.2–4.7 frames/s).
     constexpr uint32_t kFarOffFrames = 4;
+    constexpr float kFarOver = 4.0f / 3.0f, kFarUnder = 0.5f;
     const float budget = engine_->rendererSettings().dynamicResFrameTimeBudgetMs.get();
-    const bool farOff = wallFrameMs_ > 2.0f * budget || wallFrameMs_ < 0.5f * budget;
+    const bool farOff = wallFrameMs_ > kFarOver * budget || wallFrameMs_ < kFarUnder * budget;
     farOffFrames_ = farOff && !refinement_.complete() ? farOffFrames_ + 1 : 0;
     if (farOffFrames_ >= kFarOffFrames) {
       refinement_.reset(rect.extent.width, rect.extent.height, factor);
