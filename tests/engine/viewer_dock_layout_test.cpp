@@ -1,6 +1,7 @@
-// The viewer's dock layout (the scene never under a panel) and its dynamic-resolution
-// controller (the frame time meets the budget without the image breathing). Both are
-// compiled in from the viewer's app folder: they need no window.
+// The viewer's dock layout (the scene never under a panel), its dynamic-resolution
+// controller (the frame time meets the budget without the image breathing) and the choice
+// of each frame's factor between it and a still view's refinement. All are compiled in
+// from the viewer's app folder: they need no window.
 
 #include "bounce-viewer/dock_layout.h"
 #include "bounce-viewer/dynamic_resolution.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 namespace bounce::viewer {
 namespace {
@@ -88,6 +90,90 @@ TEST(DynamicResolution, ASlowFrameDropsFastAndTheLimitsHold) {
   EXPECT_EQ(d.current(), 80.0f);
   // Nonsense times change nothing.
   for (float bad : {0.0f, -5.0f, NAN, INFINITY}) EXPECT_EQ(d.next(bad, limits), 80.0f);
+}
+
+// The viewer's loop around RenderFactor: a frame rendered at `factor` is shown after
+// frameMs(factor, frame index) milliseconds; the refinement starts over when the view or
+// the factor changes, and is complete after factor² frames.
+class ViewerLoop {
+ public:
+  using FrameTime = std::function<float(uint32_t factor, int frame)>;
+  explicit ViewerLoop(FrameTime frameMs) : frameMs_(std::move(frameMs)) {}
+
+  /// Renders one frame; returns its factor.
+  uint32_t frame(bool viewChanged, const DynamicResolutionLimits& limits = {}) {
+    const uint32_t f =
+        control.next(lastMs_, limits,
+                     {.viewChanged = viewChanged || index_ == 0, .factor = factor_, .complete = complete()});
+    if (viewChanged || index_ == 0 || f != factor_) factor_ = f, refined_ = 0;
+    ++refined_;
+    lastMs_ = frameMs_(factor_, index_++);
+    return factor_;
+  }
+  bool complete() const { return refined_ >= factor_ * factor_; }
+  uint32_t factor() const { return factor_; }
+
+  RenderFactor control;
+
+ private:
+  FrameTime frameMs_;
+  float lastMs_ = 0.0f;
+  uint32_t factor_ = 0, refined_ = 0;
+  int index_ = 0;
+};
+
+// Fixed cost + per-pixel cost, as the default viewer on lavapipe: 80 ms at factor 10,
+// 151 ms at 6 (the default 150 ms budget), 290 ms at 4. The first `slowFrames` frames
+// take a second each (pipelines compiling, voxelization).
+ViewerLoop::FrameTime viewerDevice(int slowFrames) {
+  return [slowFrames](uint32_t factor, int frame) {
+    return frame < slowFrames ? 1000.0f : 40.0f + 4000.0f / float(factor * factor);
+  };
+}
+
+TEST(RenderFactor, AStillViewKeepsItsFactorAndTheControllerDoesNotClimbAboveIt) {
+  // Slow first frames push the start (25%, factor 4) down to the minimum, 10%; then its
+  // frames take 80 ms, under the budget but not far under, so the still view keeps
+  // factor 10. The controller must stay with it: when it followed those frames alone it
+  // climbed to 100%, and the first frame after the camera moved rendered the whole
+  // viewport (1.4 s at the default window).
+  ViewerLoop loop(viewerDevice(6));
+  for (int i = 0; i < 60; ++i) loop.frame(false);
+  EXPECT_EQ(loop.factor(), 10u);
+  EXPECT_FALSE(loop.complete());
+  EXPECT_LE(loop.control.percent(), 10.0f + 1e-4f);
+  // The camera moves: one controller step up from the kept 10%, not a full-size frame.
+  EXPECT_EQ(loop.frame(true), 9u);
+  // And moving on, it settles where the frames meet the budget: factor 6, 151 ms.
+  for (int i = 0; i < 30; ++i) loop.frame(true);
+  EXPECT_EQ(loop.factor(), 6u);
+}
+
+TEST(RenderFactor, AStillViewFarFromTheBudgetChangesItsFactorAfterFourFramesOnly) {
+  // Every frame takes a second: the start's factor 4 stands for three frames, then the
+  // controller's percentage after four frames of it (25% × 0.7⁴, held at the 10% minimum).
+  ViewerLoop loop([](uint32_t, int) { return 1000.0f; });
+  EXPECT_EQ(loop.frame(false), 4u);  // the first frame: no time measured yet
+  for (uint32_t i = 1; i < RenderFactor::kFarOffFrames; ++i) EXPECT_EQ(loop.frame(false), 4u) << i;
+  EXPECT_EQ(loop.frame(false), 10u);
+}
+
+TEST(RenderFactor, ACompleteViewKeepsItsFactorButSlowFramesStillLowerTheNextMovingOne) {
+  // The camera settles at factor 6; the still view completes its 36 frames; then the
+  // machine gets busy and the frames take three times as long (453 ms, far over).
+  bool busy = false;
+  ViewerLoop loop([&busy](uint32_t factor, int) {
+    const float ms = 40.0f + 4000.0f / float(factor * factor);
+    return busy ? 3.0f * ms : ms;
+  });
+  for (int i = 0; i < 40; ++i) loop.frame(true);
+  ASSERT_EQ(loop.factor(), 6u);
+  for (int i = 0; i < 40; ++i) loop.frame(false);
+  ASSERT_TRUE(loop.complete());
+  busy = true;
+  for (int i = 0; i < 20; ++i) EXPECT_EQ(loop.frame(false), 6u) << i;  // complete: kept
+  // The busy frames are not ignored: the camera moves and renders at the minimum, 10%.
+  EXPECT_EQ(loop.frame(true), 10u);
 }
 
 }  // namespace

@@ -22,4 +22,47 @@ float DynamicResolution::next(float frameMs, const DynamicResolutionLimits& limi
   return percent_;
 }
 
+void DynamicResolution::hold(float percent) {
+  if (std::isfinite(percent) && percent > 0.0f) percent_ = percent;
+}
+
+uint32_t factorForPercent(float percent) {
+  const float p = std::isfinite(percent) ? std::max(percent, 1.0f) : 100.0f;
+  return std::clamp(uint32_t(std::lround(100.0f / p)), 1u, 16u);
+}
+
+uint32_t RenderFactor::next(float frameMs, const DynamicResolutionLimits& limits,
+                            const RefinementState& refinement) {
+  uint32_t factor = factorForPercent(controller_.next(frameMs, limits));
+  if (refinement.viewChanged || factor == refinement.factor) {
+    farOffFrames_ = 0;
+    return factor;
+  }
+  // A still view keeps its factor (a new one starts the refinement over, and the frames'
+  // cost does not change while nothing moves) unless its frames stay far from the budget
+  // for kFarOffFrames in a row, and never once it is complete: the first frames of a
+  // scene are slow, and the factor picked then must not stick, but a few frames slowed
+  // by the machine must not throw the refinement away (at the default window, with ×1.5
+  // and any one frame, a still image 3.7% from bounce-render's went back to 6–9%). ×4/3
+  // of the default 150 ms is 5 frames/s: with ×2, once tracing got faster, a view kept
+  // the 25% it started at with frames of 214–240 ms (4.2–4.7 frames/s).
+  const bool farOff = frameMs > kFarOver * limits.budgetMs || frameMs < kFarUnder * limits.budgetMs;
+  if (farOff && !refinement.complete) {
+    // The controller moves on while the frames stay far off, so the factor that replaces
+    // this one is where they pointed, not a single step from it.
+    if (++farOffFrames_ < kFarOffFrames) return refinement.factor;
+    farOffFrames_ = 0;
+    return factor;
+  }
+  farOffFrames_ = 0;
+  // Kept: the controller never stays above the kept resolution, whose frames say nothing
+  // about a higher one. Left to itself it followed frames under budget up to 100% while
+  // the still view kept 11%, and the first frame after any change (a camera move, hiding
+  // the UI) rendered the whole viewport: 1.4 s at the default window, and then stayed
+  // there, complete at once. Below it, it may go: frames far over budget (a complete
+  // view keeps its factor whatever they take) say a moving view must render less.
+  controller_.hold(std::min(controller_.current(), 100.0f / float(refinement.factor)));
+  return refinement.factor;
+}
+
 }  // namespace bounce::viewer

@@ -4,6 +4,13 @@
 // cost grows with its pixels, the square of the percentage, so the step is the square
 // root of budget / frame time, damped (frames vary; what the UI costs does not scale) and
 // held inside a dead band so a frame on budget does not make the image breathe.
+//
+// The viewer renders at whole factors (1/factor of the viewport's width and height) and
+// refines a still view over factor² jittered frames (progressive_refinement.h), which a
+// new factor would start over. RenderFactor decides each frame's factor from both: a
+// moving view follows the controller; a still one keeps its factor.
+
+#include <cstdint>
 
 namespace bounce::viewer {
 
@@ -23,9 +30,40 @@ class DynamicResolution {
   /// milliseconds (non-finite or non-positive times leave it unchanged).
   float next(float frameMs, const DynamicResolutionLimits& limits);
   float current() const { return percent_; }
+  /// The frames are rendering at `percent`, not at what next() asked for (a still view
+  /// keeps its resolution): the controller goes on from there, so that it does not drift
+  /// on frame times measured at another resolution.
+  void hold(float percent);
 
  private:
   float percent_ = kStartPercent;
+};
+
+/// The whole factor nearest to 100 / percent, in 1..16.
+uint32_t factorForPercent(float percent);
+
+/// Where the refinement of the view stands when the next frame's factor is chosen.
+struct RefinementState {
+  bool viewChanged = true;  ///< camera, size, scene or settings changed: it starts over
+  uint32_t factor = 1;      ///< the factor it refines at
+  bool complete = false;    ///< every viewport pixel has been rendered exactly
+};
+
+class RenderFactor {
+ public:
+  /// Frames in a row far from the budget before a still view's factor changes.
+  static constexpr uint32_t kFarOffFrames = 4;
+  /// "Far": beyond ×4/3 of the budget (5 frames/s at the default 150 ms) or under ÷2.
+  static constexpr float kFarOver = 4.0f / 3.0f, kFarUnder = 0.5f;
+
+  /// The factor of the next frame with dynamic resolution on, after one shown `frameMs`
+  /// wall-clock milliseconds after the previous one.
+  uint32_t next(float frameMs, const DynamicResolutionLimits& limits, const RefinementState& refinement);
+  float percent() const { return controller_.current(); }
+
+ private:
+  DynamicResolution controller_;
+  uint32_t farOffFrames_ = 0;  ///< consecutive still frames far from the budget
 };
 
 }  // namespace bounce::viewer

@@ -203,13 +203,14 @@ uint64_t Viewer::refinementState(const FrameView& view) const {
   return std::hash<std::string>{}(key);
 }
 
-float Viewer::nextScreenPercentage() {
+uint32_t Viewer::nextFactor(const RefinementState& refinement) {
   const RendererSettings& s = engine_->rendererSettings();
-  if (s.dynamicResOperationMode.get() == 0) return s.screenPercentage.get();
+  // A fixed percentage is a setting: changing it changes refinementState() and starts over.
+  if (s.dynamicResOperationMode.get() == 0) return factorForPercent(s.screenPercentage.get());
   const DynamicResolutionLimits limits{.budgetMs = s.dynamicResFrameTimeBudgetMs.get(),
                                        .minPercent = s.dynamicResMinScreenPercentage.get(),
                                        .maxPercent = s.dynamicResMaxScreenPercentage.get()};
-  return dynamicResolution_.next(wallFrameMs_, limits);
+  return renderFactor_.next(wallFrameMs_, limits, refinement);
 }
 
 void Viewer::requestScreenshot(std::string path) {
@@ -429,34 +430,15 @@ void Viewer::renderAndPresent() {
   // factors) with sub-pixel jitter; progressive refinement turns a still view's frames
   // into the full-resolution image (progressive_refinement.h). The UI draws at window
   // resolution on top.
-  const float percent = nextScreenPercentage();
-  uint32_t factor = std::clamp(uint32_t(std::lround(100.0f / std::max(percent, 1.0f))), 1u, 16u);
   const FrameView full = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
   if (camera_->takeCut()) renderer_->cutHistory();
   const uint64_t state = refinementState(full);
-  if (state != refinementState_) {
+  const uint32_t factor = nextFactor(RefinementState{.viewChanged = state != refinementState_,
+                                                     .factor = refinement_.factor(),
+                                                     .complete = refinement_.complete()});
+  if (state != refinementState_ || factor != refinement_.factor()) {
     refinement_.reset(rect.extent.width, rect.extent.height, factor);
     refinementState_ = state;
-  } else if (factor != refinement_.factor()) {
-    // A still view keeps its factor (a new one starts the refinement over, and the frames'
-    // cost does not change while nothing moves) unless its frames stay far from the budget
-    // (beyond ×4/3 or ÷2) for kFarOffFrames in a row, and never once it is complete: the
-    // first frames of a scene are slow, and the factor picked then must not stick, but a
-    // few frames slowed by the machine must not throw the refinement away (at the default
-    // window, with ×1.5 and any one frame, a still image 3.7% from bounce-render's went
-    // back to 6–9%). ×4/3 of the default 150 ms is 5 frames/s: with ×2, once tracing got
-    // faster, a view kept the 25% it started at with frames of 214–240 ms (4.2–4.7 frames/s).
-    constexpr uint32_t kFarOffFrames = 4;
-    constexpr float kFarOver = 4.0f / 3.0f, kFarUnder = 0.5f;
-    const float budget = engine_->rendererSettings().dynamicResFrameTimeBudgetMs.get();
-    const bool farOff = wallFrameMs_ > kFarOver * budget || wallFrameMs_ < kFarUnder * budget;
-    farOffFrames_ = farOff && !refinement_.complete() ? farOffFrames_ + 1 : 0;
-    if (farOffFrames_ >= kFarOffFrames) {
-      refinement_.reset(rect.extent.width, rect.extent.height, factor);
-      farOffFrames_ = 0;
-    } else {
-      factor = refinement_.factor();
-    }
   }
   FrameOutputs outputs;
   outputs.display = true;

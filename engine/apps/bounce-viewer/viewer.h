@@ -137,13 +137,12 @@ class Viewer {
   RenderedFrame lastFrame_;
   std::deque<float> frameMs_;
   DockLayout layout_;
-  DynamicResolution dynamicResolution_;
+  RenderFactor renderFactor_;
   ProgressiveRefinement refinement_;
   uint64_t refinementState_ = 0;  ///< refinementState() of the frames being refined
   /// A fingerprint of what the refined image depends on; a change starts it over.
   uint64_t refinementState(const FrameView& view) const;
   float wallFrameMs_ = 0.0f;
-  uint32_t farOffFrames_ = 0;  ///< consecutive still frames far from the frame-time budget
   std::chrono::steady_clock::time_point lastPresent_{};
   // A `frames N` run being measured: frames left and when it started.
   struct FrameRun {
@@ -152,8 +151,8 @@ class Viewer {
     VkExtent2D lastRender{};
   };
   std::optional<FrameRun> frameRun_;
-  /// The screen percentage for the next frame: dynamic resolution's, or r.ScreenPercentage.
-  float nextScreenPercentage();
+  /// The factor the next frame renders at (dynamic resolution or r.ScreenPercentage).
+  uint32_t nextFactor(const RefinementState& refinement);
   void reportFrameRun();
   std::set<std::string> reportedProblems_;  // reported once, again only after they cleared
   std::chrono::steady_clock::time_point lastReloadCheck_{};
