@@ -138,6 +138,53 @@ TEST(ProgressiveRefinement, PixelsNotRenderedYetInterpolateEveryRenderedOne) {
   EXPECT_LT(errors[2], 0.5 * errors[1]);
 }
 
+TEST(ProgressiveRefinement, TheFillIsTheNormalizedTentOverTheRenderedPixels) {
+  // The fill computed directly: every pixel not rendered yet is the tent-weighted mean
+  // (weights (s − |dx|)(s − |dy|), s = ⌈factor/√frames⌉) of every pixel rendered so far,
+  // where the tent reaches one. RGBA, as the viewer's display image: alpha is not filled.
+  // Sizes that do not divide, and an odd width, so the fill's two halves differ.
+  const uint32_t w = 37, h = 23, factor = 5, frames = 3;
+  ImageBuffer truth(w, h, 4);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      for (uint32_t c = 0; c < 3; ++c)
+        truth.at(x, y, c) = 0.5f + 0.5f * std::sin(float(x * (3 + c) + y * (5 + 2 * c)));
+      truth.at(x, y, 3) = 1.0f;
+    }
+  ProgressiveRefinement r;
+  r.reset(w, h, factor);
+  std::vector<uint8_t> known(size_t(w) * h, 0);
+  ImageBuffer shown;
+  for (uint32_t f = 0; f < frames; ++f) {
+    const glm::uvec2 j = r.nextJitter();
+    for (uint32_t y = j.y; y < h; y += factor)
+      for (uint32_t x = j.x; x < w; x += factor) known[size_t(y) * w + x] = 1;
+    shown = r.add(renderedAt(truth, factor, j));
+  }
+  const int s = int(std::ceil(float(factor) / std::sqrt(float(frames))));
+  size_t filled = 0;
+  for (int y = 0; y < int(h); ++y)
+    for (int x = 0; x < int(w); ++x) {
+      EXPECT_EQ(shown.at(x, y, 3), 1.0f);
+      if (known[size_t(y) * w + x]) {
+        for (uint32_t c = 0; c < 3; ++c) EXPECT_EQ(shown.at(x, y, c), truth.at(x, y, c));
+        continue;
+      }
+      double sum[3] = {}, weight = 0.0;
+      for (int v = std::max(0, y - s + 1); v < std::min(int(h), y + s); ++v)
+        for (int u = std::max(0, x - s + 1); u < std::min(int(w), x + s); ++u) {
+          if (!known[size_t(v) * w + u]) continue;
+          const double k = double(s - std::abs(u - x)) * double(s - std::abs(v - y));
+          for (uint32_t c = 0; c < 3; ++c) sum[c] += k * truth.at(u, v, c);
+          weight += k;
+        }
+      if (weight == 0.0) continue;  // out of every tent's reach: the latest frame, upscaled
+      ++filled;
+      for (uint32_t c = 0; c < 3; ++c) EXPECT_NEAR(shown.at(x, y, c), sum[c] / weight, 1e-5) << x << "," << y;
+    }
+  EXPECT_GT(filled, size_t(w) * h / 2);
+}
+
 TEST(ProgressiveRefinement, TheFirstFrameFillsEveryPixelAndAResetForgets) {
   const ImageBuffer truth = viewportImage(16, 8);
   ProgressiveRefinement r;

@@ -62,7 +62,9 @@ Semaphore createSemaphore(VkDevice device) {
 
 uint8_t toByte(float v) {
   if (!(v > 0.0f)) return 0;  // also NaN
-  return v >= 1.0f ? 255 : uint8_t(std::lround(v * 255.0f));
+  // Truncating v·255 + 0.5 rounds to nearest as lround did for these positive values, at a
+  // fraction of its cost (lround was most of the conversion of 384 k pixels a frame).
+  return v >= 1.0f ? 255 : uint8_t(v * 255.0f + 0.5f);
 }
 
 }  // namespace

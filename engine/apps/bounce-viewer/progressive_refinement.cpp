@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace bounce::viewer {
 
@@ -38,38 +39,53 @@ std::vector<glm::uvec2> jitterOrder(uint32_t factor) {
   return order;
 }
 
-/// Box sums of s taps along x (`alongRows`) or y of a width × height image of `channels`
-/// floats per pixel, from `src` into `dst`: forward sums i .. i+s−1, backward i−s+1 .. i
-/// (clamped to the image). One of each makes the tent s − |d|, |d| < s. A sliding window
-/// in double (each term added and dropped once; enough for the whole-number weights). The
-/// y pass slides one window per column down the rows together, so it reads rows whole.
-void boxSums(const std::vector<float>& src, std::vector<float>& dst, uint32_t width, uint32_t height,
-             uint32_t channels, uint32_t s, bool forward, bool alongRows, std::vector<double>& window) {
-  dst.resize(src.size());
-  const uint32_t lines = alongRows ? height : 1, count = alongRows ? width : height;
-  const size_t lineSize = alongRows ? size_t(channels) : size_t(width) * channels;  // floats per step
-  window.resize(lineSize);
-  for (uint32_t l = 0; l < lines; ++l) {
-    const size_t first = size_t(l) * width * channels;
-    auto add = [&](uint32_t i, double sign) {
-      const float* p = &src[first + i * lineSize];
-      for (size_t k = 0; k < lineSize; ++k) window[k] += sign * double(p[k]);
-    };
-    std::fill(window.begin(), window.end(), 0.0);
-    if (forward)
-      for (uint32_t i = 0; i < std::min(count, s); ++i) add(i, 1.0);
-    for (uint32_t i = 0; i < count; ++i) {
-      if (!forward) add(i, 1.0);
-      float* out = &dst[first + i * lineSize];
-      for (size_t k = 0; k < lineSize; ++k) out[k] = float(window[k]);
-      if (forward) {
-        add(i, -1.0);
-        if (i + s < count) add(i + s, 1.0);
-      } else if (i + 1 >= s) {
-        add(i + 1 - s, -1.0);
-      }
+/// Tent sums of radius s (weights s − |d| for |d| < s; nothing outside the image) along
+/// `count` elements `stride` floats apart, each `lanes` contiguous floats, from `src` to
+/// `dst`. One pass with three running sums per lane, where two box passes (forward, then
+/// backward) did the same in twice the memory traffic:
+///   T(i+1) = T(i) + R(i+1) − L(i),  R(i) = v(i) + … + v(i+s−1),  L(i) = v(i−s+1) + … + v(i),
+/// each of R and L sliding by one term in and one out. Sums in double: every term is added
+/// and dropped once, and the weights' sums, whole numbers, stay exact.
+void tentSums(const float* src, float* dst, size_t count, size_t stride, size_t lanes, uint32_t s,
+              std::vector<double>& sums) {
+  sums.assign(3 * lanes, 0.0);
+  double *tent = sums.data(), *right = tent + lanes, *left = right + lanes;
+  auto at = [&](size_t i) { return src + i * stride; };
+  for (size_t d = 0; d < std::min<size_t>(s, count); ++d)
+    for (size_t k = 0; k < lanes; ++k) tent[k] += double(s - d) * at(d)[k];
+  for (size_t d = 1; d < std::min<size_t>(s + 1, count); ++d)
+    for (size_t k = 0; k < lanes; ++k) right[k] += at(d)[k];
+  for (size_t k = 0; k < lanes; ++k) left[k] = at(0)[k];
+  for (size_t i = 0; i < count; ++i) {
+    float* out = dst + i * stride;
+    for (size_t k = 0; k < lanes; ++k) out[k] = float(tent[k]);
+    if (i + 1 == count) break;
+    // T(i+1), then L(i+1) and R(i+2).
+    const float* in = at(i + 1);
+    for (size_t k = 0; k < lanes; ++k) tent[k] += right[k] - left[k];
+    if (i + 1 >= s) {
+      const float* leaving = at(i + 1 - s);
+      for (size_t k = 0; k < lanes; ++k) left[k] += double(in[k]) - double(leaving[k]);
+    } else {
+      for (size_t k = 0; k < lanes; ++k) left[k] += double(in[k]);
+    }
+    if (i + 1 + s < count) {
+      const float* entering = at(i + 1 + s);
+      for (size_t k = 0; k < lanes; ++k) right[k] += double(entering[k]) - double(in[k]);
+    } else {
+      for (size_t k = 0; k < lanes; ++k) right[k] -= double(in[k]);
     }
   }
+}
+
+/// Runs part(first, last) over [0, count) in two halves, the second on another thread: the
+/// fill runs between frames, when a CPU device (lavapipe) leaves the cores to the viewer.
+template <class Part>
+void inTwoHalves(size_t count, const Part& part) {
+  const size_t half = count / 2;
+  std::thread other([&] { part(half, count); });
+  part(size_t(0), half);
+  other.join();
 }
 
 }  // namespace
@@ -152,26 +168,34 @@ void ProgressiveRefinement::fillFromExactPixels() {
   // a regular lattice, and it uses every pixel rendered so far, not only the latest
   // frame's: after n frames the fill interpolates samples about factor/√n apart instead
   // of factor. Where no exact pixel lies within the tent, the latest frame's value stays.
-  const uint32_t c = exact_.channels, w = width_, h = height_;
+  // Colour only: alpha (the display image's is 1) stays the latest frame's.
+  const uint32_t c = exact_.channels, colour = std::min(c, 3u), w = width_, h = height_;
   const uint32_t radius = std::max(1u, uint32_t(std::ceil(float(factor_) / std::sqrt(float(frames_)))));
-  const uint32_t n = c + 1;  // the channels, premultiplied by the weight, then the weight
+  const uint32_t n = colour + 1;  // the colour channels, premultiplied by the weight, then the weight
   weighted_.assign(size_t(w) * h * n, 0.0f);
+  scratch_.resize(weighted_.size());
   for (size_t i = 0; i < known_.size(); ++i)
     if (known_[i]) {
-      std::copy_n(&exact_.pixels[i * c], c, &weighted_[i * n]);
-      weighted_[i * n + c] = 1.0f;
+      std::copy_n(&exact_.pixels[i * c], colour, &weighted_[i * n]);
+      weighted_[i * n + colour] = 1.0f;
     }
-  for (bool alongRows : {true, false})
-    for (bool forward : {true, false}) {
-      boxSums(weighted_, scratch_, w, h, n, radius, forward, alongRows, window_);
-      std::swap(weighted_, scratch_);
-    }
+  // Along the rows (each row's pixels n floats apart), then down the columns (each column's
+  // n floats w·n apart, a band of columns slid down the rows together, reading rows whole).
+  inTwoHalves(h, [&](size_t first, size_t last) {
+    std::vector<double> sums;
+    for (size_t y = first; y < last; ++y)
+      tentSums(&weighted_[y * w * n], &scratch_[y * w * n], w, n, n, radius, sums);
+  });
+  inTwoHalves(w, [&](size_t first, size_t last) {
+    std::vector<double> sums;
+    tentSums(&scratch_[first * n], &weighted_[first * n], h, size_t(w) * n, (last - first) * n, radius, sums);
+  });
   for (size_t i = 0; i < known_.size(); ++i) {
     const float* sum = &weighted_[i * n];
     // Weights are whole numbers (products of tent weights): below 0.5 means no exact pixel
     // in reach, and the latest frame's value stays.
-    if (sum[c] < 0.5f) continue;
-    for (uint32_t k = 0; k < c; ++k) shown_.pixels[i * c + k] = sum[k] / sum[c];
+    if (sum[colour] < 0.5f) continue;
+    for (uint32_t k = 0; k < colour; ++k) shown_.pixels[i * c + k] = sum[k] / sum[colour];
   }
 }
 

@@ -48,7 +48,6 @@ class ProgressiveRefinement {
   ImageBuffer shown_;
   std::vector<glm::uvec2> order_;          ///< the factor² jitters, in the order frames take them
   std::vector<float> weighted_, scratch_;  ///< the fill's buffers, kept between frames
-  std::vector<double> window_;
 
   void fillFromExactPixels();
 };
