@@ -1,6 +1,7 @@
 #include "dock_layout.h"
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <utility>
 
@@ -28,7 +29,7 @@ DockLayout DockLayout::compute(float width, float height, float top, const Panel
   d.scene = {0.0f, 0.0f, width, height};
   if (!uiVisible || !docked) return d;
   d.docked = true;
-  top = std::clamp(top, 0.0f, height);
+  top = std::round(std::clamp(top, 0.0f, height));
   const float body = height - top;
   const bool leftOpen = open.views || open.frame || open.postProcess;
   const bool rightOpen = open.settings || open.scene;
@@ -38,10 +39,13 @@ DockLayout DockLayout::compute(float width, float height, float top, const Panel
   const float rightWidth = rightOpen ? std::clamp(0.25f * width, 280.0f, 420.0f) : 0.0f;
   const float columns = std::min(leftWidth + rightWidth, 0.6f * width);
   const float scale = leftWidth + rightWidth > 0.0f ? columns / (leftWidth + rightWidth) : 1.0f;
-  d.left = {0.0f, top, leftWidth * scale, body};
-  d.right = {width - rightWidth * scale, top, rightWidth * scale, body};
+  // Whole units: the scene's rect becomes whole framebuffer pixels, and a fractional edge
+  // rounded both ways put a row of the console's border into the rendered scene (704×547
+  // rendered where the frame report said 704×546).
+  d.left = {0.0f, top, std::round(leftWidth * scale), body};
+  d.right = {width - std::round(rightWidth * scale), top, std::round(rightWidth * scale), body};
   const float middle = width - d.left.width - d.right.width;
-  const float bottomHeight = open.console ? std::clamp(0.22f * body, 120.0f, 260.0f) : 0.0f;
+  const float bottomHeight = open.console ? std::round(std::clamp(0.22f * body, 120.0f, 260.0f)) : 0.0f;
   d.bottom = {d.left.width, height - bottomHeight, middle, bottomHeight};
   d.scene = {d.left.width, top, middle, body - bottomHeight};
   auto at = [&d](DockedPanel p) { return &d.panels_[size_t(p)]; };
