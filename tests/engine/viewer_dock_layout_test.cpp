@@ -93,19 +93,25 @@ TEST(DynamicResolution, ASlowFrameDropsFastAndTheLimitsHold) {
 }
 
 // The viewer's loop around RenderFactor: a frame rendered at `factor` is shown after
-// frameMs(factor, frame index) milliseconds; the refinement starts over when the view or
-// the factor changes, and is complete after factor² frames.
+// frameMs(factor, frame index) milliseconds, one that only shows a complete view after
+// kShowMs; the refinement starts over when the view or the factor changes, and is
+// complete after factor² frames.
 class ViewerLoop {
  public:
   using FrameTime = std::function<float(uint32_t factor, int frame)>;
+  static constexpr float kShowMs = 10.0f;
   explicit ViewerLoop(FrameTime frameMs) : frameMs_(std::move(frameMs)) {}
 
-  /// Renders one frame; returns its factor.
+  /// Shows one frame; returns the factor it rendered at, or 0 when it only showed the view.
   uint32_t frame(bool viewChanged, const DynamicResolutionLimits& limits = {}) {
-    const uint32_t f =
-        control.next(lastMs_, limits,
-                     {.viewChanged = viewChanged || index_ == 0, .factor = factor_, .complete = complete()});
-    if (viewChanged || index_ == 0 || f != factor_) factor_ = f, refined_ = 0;
+    const RefinementState state{
+        .viewChanged = viewChanged || index_ == 0, .factor = factor_, .complete = complete()};
+    if (!control.renders(lastMs_, limits.budgetMs, state)) {
+      lastMs_ = kShowMs;
+      return 0;
+    }
+    const uint32_t f = control.next(lastMs_, limits, state);
+    if (state.viewChanged || f != factor_) factor_ = f, refined_ = 0;
     ++refined_;
     lastMs_ = frameMs_(factor_, index_++);
     return factor_;
@@ -158,7 +164,7 @@ TEST(RenderFactor, AStillViewFarFromTheBudgetChangesItsFactorAfterFourFramesOnly
   EXPECT_EQ(loop.frame(false), 10u);
 }
 
-TEST(RenderFactor, ACompleteViewKeepsItsFactorButSlowFramesStillLowerTheNextMovingOne) {
+TEST(RenderFactor, ACompleteViewFarOverBudgetIsShownAsItIsUntilTheViewChanges) {
   // The camera settles at factor 6; the still view completes its 36 frames; then the
   // machine gets busy and the frames take three times as long (453 ms, far over).
   bool busy = false;
@@ -168,13 +174,16 @@ TEST(RenderFactor, ACompleteViewKeepsItsFactorButSlowFramesStillLowerTheNextMovi
   });
   for (int i = 0; i < 40; ++i) loop.frame(true);
   ASSERT_EQ(loop.factor(), 6u);
-  for (int i = 0; i < 40; ++i) loop.frame(false);
+  for (int i = 0; i < 40; ++i) EXPECT_EQ(loop.frame(false), 6u) << i;  // on budget: it renders on
   ASSERT_TRUE(loop.complete());
   busy = true;
-  for (int i = 0; i < 20; ++i) EXPECT_EQ(loop.frame(false), 6u) << i;  // complete: kept
-  // The busy frames are not ignored: the camera moves and renders at the minimum, 10%.
+  // kFarOffFrames busy frames render, at the factor a complete view keeps.
+  for (uint32_t i = 0; i < RenderFactor::kFarOffFrames; ++i) EXPECT_EQ(loop.frame(false), 6u) << i;
+  // Then only the image is shown, so the UI keeps its pace, however long it stays still.
+  for (int i = 0; i < 100; ++i) EXPECT_EQ(loop.frame(false), 0u) << i;
+  // The busy frames lowered the controller (to its 10% minimum); the 10 ms frames that only
+  // showed the image did not raise it: the camera moves and renders at 10%.
   EXPECT_EQ(loop.frame(true), 10u);
 }
-
 }  // namespace
 }  // namespace bounce::viewer

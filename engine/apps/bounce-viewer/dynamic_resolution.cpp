@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace bounce::viewer {
 
@@ -31,8 +32,23 @@ uint32_t factorForPercent(float percent) {
   return std::clamp(uint32_t(std::lround(100.0f / p)), 1u, 16u);
 }
 
+bool RenderFactor::renders(float frameMs, float budgetMs, const RefinementState& refinement) {
+  if (refinement.viewChanged) {
+    paused_ = false;
+    slowComplete_ = 0;
+  } else if (!paused_ && !shownOnly_) {
+    slowComplete_ = refinement.complete && frameMs > kFarOver * budgetMs ? slowComplete_ + 1 : 0;
+    paused_ = slowComplete_ >= kFarOffFrames;
+  }
+  if (paused_) shownOnly_ = true;
+  return !paused_;
+}
+
 uint32_t RenderFactor::next(float frameMs, const DynamicResolutionLimits& limits,
                             const RefinementState& refinement) {
+  // A frame that only showed the image says nothing about the scene's cost.
+  if (shownOnly_) frameMs = std::numeric_limits<float>::quiet_NaN();
+  shownOnly_ = false;
   uint32_t factor = factorForPercent(controller_.next(frameMs, limits));
   if (refinement.viewChanged || factor == refinement.factor) {
     farOffFrames_ = 0;

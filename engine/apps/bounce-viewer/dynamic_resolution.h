@@ -56,14 +56,30 @@ class RenderFactor {
   /// "Far": beyond ×4/3 of the budget (5 frames/s at the default 150 ms) or under ÷2.
   static constexpr float kFarOver = 4.0f / 3.0f, kFarUnder = 0.5f;
 
+  /// Whether the next frame renders the scene, after one shown `frameMs` wall-clock
+  /// milliseconds after the previous one. A complete still view whose frames stayed beyond
+  /// ×4/3 of the budget for kFarOffFrames is shown as it is, with the UI, until anything
+  /// changes: it is the full-resolution image already, and rendering it again held the UI
+  /// at the scene's rate (0.55 frames/s with VPL at 50% of the default window). Any
+  /// technique that refines over time (DDGI's probes) pauses with it.
+  bool renders(float frameMs, float budgetMs, const RefinementState& refinement);
   /// The factor of the next frame with dynamic resolution on, after one shown `frameMs`
-  /// wall-clock milliseconds after the previous one.
+  /// wall-clock milliseconds after the previous one (not counted when it only showed the
+  /// image: renders() said no).
   uint32_t next(float frameMs, const DynamicResolutionLimits& limits, const RefinementState& refinement);
+  /// The factor of the next frame at a fixed screen percentage (dynamic resolution off).
+  uint32_t fixed(float percent) {
+    shownOnly_ = false;
+    return factorForPercent(percent);
+  }
   float percent() const { return controller_.current(); }
 
  private:
   DynamicResolution controller_;
   uint32_t farOffFrames_ = 0;  ///< consecutive still frames far from the budget
+  uint32_t slowComplete_ = 0;  ///< consecutive frames of a complete view far over it
+  bool paused_ = false;        ///< a complete view shown as it is
+  bool shownOnly_ = false;     ///< the last frame only showed the image
 };
 
 }  // namespace bounce::viewer

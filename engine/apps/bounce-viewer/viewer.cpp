@@ -173,7 +173,8 @@ void Viewer::renderFrames(uint32_t count) { framesToRender_ = std::max(framesToR
 
 void Viewer::measureFrames(uint32_t count) {
   renderFrames(count);
-  frameRun_ = FrameRun{framesToRender_, std::chrono::steady_clock::now(), {}};
+  frameRun_ = FrameRun{framesToRender_, std::chrono::steady_clock::now(),
+                       {lastFrame_.renderWidth, lastFrame_.renderHeight}};
 }
 
 void Viewer::reportFrameRun() {
@@ -182,11 +183,13 @@ void Viewer::reportFrameRun() {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - frameRun_->start).count();
   const double rate = seconds > 0.0 ? double(frameRun_->frames) / seconds : 0.0;
   const VkExtent2D r = frameRun_->lastRender;
-  const std::string line = fmt::format(
+  std::string line = fmt::format(
       "frames {}: {:.2f} frames/s ({:.1f} ms each), last at {}x{} ({:.0f}% of the {}x{} viewport)",
       frameRun_->frames, rate, seconds * 1000.0 / std::max(1u, frameRun_->frames), r.width, r.height,
       100.0f / float(std::max(1u, refinement_.factor())), uint32_t(layout_.scene.width),
       uint32_t(layout_.scene.height));
+  if (frameRun_->shownOnly > 0)
+    line += fmt::format("; {} showed the complete view without rendering it", frameRun_->shownOnly);
   log_.add(LineKind::Output, line);
   fmt::print("bounce-viewer: {}\n", line);
   std::fflush(stdout);
@@ -206,7 +209,7 @@ uint64_t Viewer::refinementState(const FrameView& view) const {
 uint32_t Viewer::nextFactor(const RefinementState& refinement) {
   const RendererSettings& s = engine_->rendererSettings();
   // A fixed percentage is a setting: changing it changes refinementState() and starts over.
-  if (s.dynamicResOperationMode.get() == 0) return factorForPercent(s.screenPercentage.get());
+  if (s.dynamicResOperationMode.get() == 0) return renderFactor_.fixed(s.screenPercentage.get());
   const DynamicResolutionLimits limits{.budgetMs = s.dynamicResFrameTimeBudgetMs.get(),
                                        .minPercent = s.dynamicResMinScreenPercentage.get(),
                                        .maxPercent = s.dynamicResMaxScreenPercentage.get()};
@@ -416,26 +419,9 @@ void Viewer::reportChangedProblems(const RenderedFrame& frame) {
   reportedProblems_ = std::move(now);
 }
 
-void Viewer::renderAndPresent() {
-  const VkExtent2D extent = presenter_->extent();
-  // The scene's rect in framebuffer pixels (the layout is in ImGui's display units).
-  const ImGuiIO& io = ImGui::GetIO();
-  const float sx = io.DisplayFramebufferScale.x > 0.0f ? io.DisplayFramebufferScale.x : 1.0f;
-  const float sy = io.DisplayFramebufferScale.y > 0.0f ? io.DisplayFramebufferScale.y : 1.0f;
-  VkRect2D rect{{int32_t(std::lround(layout_.scene.x * sx)), int32_t(std::lround(layout_.scene.y * sy))},
-                {uint32_t(std::max(1L, std::lround(layout_.scene.width * sx))),
-                 uint32_t(std::max(1L, std::lround(layout_.scene.height * sy)))}};
-  if (layout_.scene.empty()) rect = {{0, 0}, extent};
-  // The scene renders at 1/factor of the viewport (the screen percentage, in whole
-  // factors) with sub-pixel jitter; progressive refinement turns a still view's frames
-  // into the full-resolution image (progressive_refinement.h). The UI draws at window
-  // resolution on top.
-  const FrameView full = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
-  if (camera_->takeCut()) renderer_->cutHistory();
-  const uint64_t state = refinementState(full);
-  const uint32_t factor = nextFactor(RefinementState{.viewChanged = state != refinementState_,
-                                                     .factor = refinement_.factor(),
-                                                     .complete = refinement_.complete()});
+std::optional<ImageBuffer> Viewer::renderScene(VkRect2D rect, const FrameView& full, uint64_t state,
+                                               const RefinementState& refinement) {
+  const uint32_t factor = nextFactor(refinement);
   if (state != refinementState_ || factor != refinement_.factor()) {
     refinement_.reset(rect.extent.width, rect.extent.height, factor);
     refinementState_ = state;
@@ -469,6 +455,37 @@ void Viewer::renderAndPresent() {
     if (!reportedProblems_.count(message)) log::error("{}", message);
     reportedProblems_ = {message};
   }
+  return hdr;
+}
+
+void Viewer::renderAndPresent() {
+  const VkExtent2D extent = presenter_->extent();
+  // The scene's rect in framebuffer pixels (the layout is in ImGui's display units).
+  const ImGuiIO& io = ImGui::GetIO();
+  const float sx = io.DisplayFramebufferScale.x > 0.0f ? io.DisplayFramebufferScale.x : 1.0f;
+  const float sy = io.DisplayFramebufferScale.y > 0.0f ? io.DisplayFramebufferScale.y : 1.0f;
+  VkRect2D rect{{int32_t(std::lround(layout_.scene.x * sx)), int32_t(std::lround(layout_.scene.y * sy))},
+                {uint32_t(std::max(1L, std::lround(layout_.scene.width * sx))),
+                 uint32_t(std::max(1L, std::lround(layout_.scene.height * sy)))}};
+  if (layout_.scene.empty()) rect = {{0, 0}, extent};
+  // The scene renders at 1/factor of the viewport (the screen percentage, in whole
+  // factors) with sub-pixel jitter; progressive refinement turns a still view's frames
+  // into the full-resolution image (progressive_refinement.h). The UI draws at window
+  // resolution on top.
+  const FrameView full = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
+  if (camera_->takeCut()) renderer_->cutHistory();
+  const uint64_t state = refinementState(full);
+  const RefinementState refinement{.viewChanged = state != refinementState_,
+                                   .factor = refinement_.factor(),
+                                   .complete = refinement_.complete()};
+  // A complete still view far over budget is shown as it is (RenderFactor::renders), so the
+  // UI keeps its pace; a screenshot renders all the same (it writes the HDR image too).
+  const float budgetMs = engine_->rendererSettings().dynamicResFrameTimeBudgetMs.get();
+  std::optional<ImageBuffer> hdr;
+  if (renderFactor_.renders(wallFrameMs_, budgetMs, refinement) || pendingScreenshot_)
+    hdr = renderScene(rect, full, state, refinement);
+  else if (frameRun_)
+    ++frameRun_->shownOnly;
   WindowPixels pixels;
   const bool current = presenter_->present(
       displayed_, rect, [this](VkCommandBuffer cmd) { imgui_->record(cmd); },

@@ -149,10 +149,15 @@ class Viewer {
     uint32_t frames = 0;
     std::chrono::steady_clock::time_point start;
     VkExtent2D lastRender{};
+    uint32_t shownOnly = 0;  ///< frames that showed a complete view without rendering it
   };
   std::optional<FrameRun> frameRun_;
   /// The factor the next frame renders at (dynamic resolution or r.ScreenPercentage).
   uint32_t nextFactor(const RefinementState& refinement);
+  /// Renders the scene's next frame into the refinement (and displayed_); returns the HDR
+  /// radiance at the viewport's size when a screenshot asked for it.
+  std::optional<ImageBuffer> renderScene(VkRect2D rect, const FrameView& full, uint64_t state,
+                                         const RefinementState& refinement);
   void reportFrameRun();
   std::set<std::string> reportedProblems_;  // reported once, again only after they cleared
   std::chrono::steady_clock::time_point lastReloadCheck_{};
