@@ -119,9 +119,7 @@ void resolveVoxel(ivec3 t, int level) {
   // finer level's extent, toroidally: its origin halved, mapSize / 2 wide) this frame's
   // downsample, which always follows the resolve, rewrites every voxel of such a brick;
   // outside it (the box has moved on) only the resolve can clear what it left.
-  int n = clipMap.mapSize;
-  bool inner = level > 0 && all(lessThan((t - (clipMap.levelOrigin[max(level - 1, 0)].xyz >> 1)) & (n - 1),
-                                         ivec3(n >> 1)));
+  bool inner = vxgiInnerBoxHolds(t, 1, level);
   bool downsampled =
       (brickFlags[level * vxgiBricksPerLevel() + vxgiBrickIndex(t)] & VXGI_BRICK_DOWNSAMPLED) != 0u;
   countWork(WORK_BUFFER_BYTES, occupied != wasStored ? 16u : 8u);  // the two words read, one updated

@@ -31,6 +31,16 @@ int vxgiBrickIndex(ivec3 t) {
   return (b.z * n + b.y) * n + b.x;
 }
 
+// Whether voxels first .. first + extent − 1 (per axis, toroidally) all lie in the inner box
+// of `level`: the finer level's extent (its origin halved, mapSize / 2 wide), which this
+// frame's downsample rewrites wherever it stored anything. Level 0 has none. max() keeps
+// the masked lanes of level 0 (lavapipe runs both sides of a branch) inside the array.
+bool vxgiInnerBoxHolds(ivec3 first, int extent, int level) {
+  int n = clipMap.mapSize;
+  ivec3 rel = (first - (clipMap.levelOrigin[max(level - 1, 0)].xyz >> 1)) & (n - 1);
+  return level > 0 && all(lessThan(rel + (extent - 1), ivec3(n >> 1)));
+}
+
 // VxgiVoxelStored: one bit per voxel, 64 per brick in two words, set while the texels the
 // resolve last stored for the voxel may be non-zero. Air over air (the bit clear, and no
 // downsampled content in the brick) need not be stored again: most voxels of the bricks a
