@@ -80,32 +80,46 @@ void resolveVoxel(ivec3 t, int level) {
   // costs per operation (exchanging the coverage too was no faster: every voxel's six
   // would be atomics, where a load does for air).
   uint bytes = 0u;
-  for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
 #if VXGI_AO_MODE
+  for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
     float w = imageAtomicExchange(scratch, vxgiScratchCoord(t, d, pc.scratchLayout.x), 0.0);
     bytes += 8u;
     emittance[d] = vec3(0.0);
+    density[d] = vxgiDensityFromOpacity(saturate(isnan(w) ? 0.0 : w));
+  }
 #else
-    ivec3 wCoord = vxgiScratchCoord(t, d * per + 3, pc.scratchLayout.x);
-    float w = imageLoad(scratch, wCoord).r;
-    // Most voxels are air: no coverage means density 0, and then emittance (radiance ×
-    // density) is 0 whatever the colour sums hold, so they are not read (a quarter of the
-    // reads for an empty voxel). Nor need they be zeroed: voxelize.frag adds colour only
-    // with coverage w > 0, so a sum of exactly 0 coverage means colour sums of 0 too.
-    vec3 sum = vec3(0.0);
-    bytes += w != 0.0 ? 4u + 3u * 8u + 4u : 4u;
-    if (w != 0.0) {  // NaN too: zeroed all the same
-      for (int c = 0; c < 3; ++c)
-        sum[c] = imageAtomicExchange(scratch, vxgiScratchCoord(t, d * per + c, pc.scratchLayout.x), 0.0);
-      imageStore(scratch, wCoord, vec4(0.0));
-    }
+  // Most voxels are air, and a surface's voxel has coverage in one or two directions: no
+  // coverage means density 0, and then emittance (radiance × density) is 0 whatever the
+  // colour sums hold, so they are not read. Nor need they be zeroed: voxelize.frag adds
+  // colour only with coverage w > 0, so a sum of exactly 0 coverage means colour sums of 0.
+  float w[VXGI_DIRECTIONS];
+  uint covered = 0u;  // directions with coverage (NaN too: zeroed all the same)
+  for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
+    w[d] = imageLoad(scratch, vxgiScratchCoord(t, d * per + 3, pc.scratchLayout.x)).r;
+    if (w[d] != 0.0) covered |= 1u << d;
+    bytes += w[d] != 0.0 ? 4u + 3u * 8u + 4u : 4u;
+  }
+  vec3 sums[VXGI_DIRECTIONS];
+  for (int d = 0; d < VXGI_DIRECTIONS; ++d) sums[d] = vec3(0.0);
+  // The covered directions only, one after the other: a loop runs while any lane has one
+  // left, where a branch per direction ran all six directions' exchanges on lavapipe, the
+  // lanes without coverage masked off but paying all the same.
+  while (covered != 0u) {
+    int d = findLSB(covered);
+    covered &= covered - 1u;
+    vec3 sum;
+    for (int c = 0; c < 3; ++c)
+      sum[c] = imageAtomicExchange(scratch, vxgiScratchCoord(t, d * per + c, pc.scratchLayout.x), 0.0);
+    imageStore(scratch, vxgiScratchCoord(t, d * per + 3, pc.scratchLayout.x), vec4(0.0));
+    sums[d] = sum;
+  }
+  for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
     // w ≈ 0 with a sum means nothing opaque emits here; 1e-6 only keeps the division
     // finite, and the density below is then 0 anyway. A NaN w (zeroed above) emits nothing.
-    emittance[d] = w > 0.0 ? sum / max(w, 1e-6) : vec3(0.0);
-#endif
-    density[d] = vxgiDensityFromOpacity(saturate(isnan(w) ? 0.0 : w));
-    emittance[d] *= density[d];
+    density[d] = vxgiDensityFromOpacity(saturate(isnan(w[d]) ? 0.0 : w[d]));
+    emittance[d] = (w[d] > 0.0 ? sums[d] / max(w[d], 1e-6) : vec3(0.0)) * density[d];
   }
+#endif
   // Air over air is not stored again (vxgi/scratch.glsl, VxgiVoxelStored): the texels are
   // stored when anything is non-zero now, or was when the resolve last stored them, or
   // downsampling may have stored something there that nothing else will overwrite.
