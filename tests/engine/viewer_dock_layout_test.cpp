@@ -94,8 +94,9 @@ TEST(DynamicResolution, ASlowFrameDropsFastAndTheLimitsHold) {
 
 // The viewer's loop around RenderFactor: a frame rendered at `factor` is shown after
 // frameMs(factor, frame index) milliseconds, one that only shows a complete view after
-// kShowMs; the refinement starts over when the view or the factor changes, and is
-// complete after factor² frames.
+// kShowMs; the refinement starts over when the view or the factor changes, is complete
+// after factor² frames, and settled one frame later unless `converging` (a technique still
+// changing the image).
 class ViewerLoop {
  public:
   using FrameTime = std::function<float(uint32_t factor, int frame)>;
@@ -104,8 +105,10 @@ class ViewerLoop {
 
   /// Shows one frame; returns the factor it rendered at, or 0 when it only showed the view.
   uint32_t frame(bool viewChanged, const DynamicResolutionLimits& limits = {}) {
-    const RefinementState state{
-        .viewChanged = viewChanged || index_ == 0, .factor = factor_, .complete = complete()};
+    const RefinementState state{.viewChanged = viewChanged || index_ == 0,
+                                .factor = factor_,
+                                .complete = complete(),
+                                .settled = refined_ > factor_ * factor_ && !converging};
     if (!control.renders(lastMs_, limits.budgetMs, state)) {
       lastMs_ = kShowMs;
       return 0;
@@ -120,6 +123,7 @@ class ViewerLoop {
   uint32_t factor() const { return factor_; }
 
   RenderFactor control;
+  bool converging = false;
 
  private:
   FrameTime frameMs_;
@@ -184,6 +188,21 @@ TEST(RenderFactor, ACompleteViewFarOverBudgetIsShownAsItIsUntilTheViewChanges) {
   // The busy frames lowered the controller (to its 10% minimum); the 10 ms frames that only
   // showed the image did not raise it: the camera moves and renders at 10%.
   EXPECT_EQ(loop.frame(true), 10u);
+}
+
+TEST(RenderFactor, AViewATechniqueIsStillConvergingOnRendersOnHoweverSlow) {
+  // Complete at factor 4 (25%) but every frame still changes the image (DDGI's probes
+  // converging), at a second a frame: it must render on, or the image would stop short.
+  ViewerLoop loop([](uint32_t, int) { return 1000.0f; });
+  const DynamicResolutionLimits limits{.budgetMs = 150.0f, .minPercent = 25.0f, .maxPercent = 25.0f};
+  loop.converging = true;
+  for (int i = 0; i < 40; ++i) EXPECT_EQ(loop.frame(false, limits), 4u) << i;
+  ASSERT_TRUE(loop.complete());
+  // Once its frames change nothing, it is shown as it is from the kFarOffFrames-th slow
+  // frame on.
+  loop.converging = false;
+  for (uint32_t i = 1; i < RenderFactor::kFarOffFrames; ++i) EXPECT_EQ(loop.frame(false, limits), 4u) << i;
+  EXPECT_EQ(loop.frame(false, limits), 0u);
 }
 }  // namespace
 }  // namespace bounce::viewer

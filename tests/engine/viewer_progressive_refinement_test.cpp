@@ -185,6 +185,31 @@ TEST(ProgressiveRefinement, TheFillIsTheNormalizedTentOverTheRenderedPixels) {
   EXPECT_GT(filled, size_t(w) * h / 2);
 }
 
+TEST(ProgressiveRefinement, AFrameOfACompleteViewSaysHowFarItMovedThePixels) {
+  // What tells the viewer a complete view has settled: no change is known before it is
+  // complete; then the largest change a frame made to the pixels it rendered again.
+  const ImageBuffer truth = viewportImage(12, 8);
+  ProgressiveRefinement r;
+  r.reset(12, 8, 2);
+  for (int f = 0; f < 4; ++f) {
+    EXPECT_TRUE(std::isinf(r.lastChange())) << f;
+    r.add(renderedAt(truth, 2, r.nextJitter()));
+  }
+  ASSERT_TRUE(r.complete());
+  r.add(renderedAt(truth, 2, r.nextJitter()));  // the same image again
+  EXPECT_EQ(r.lastChange(), 0.0f);
+  ImageBuffer brighter = truth;
+  for (float& v : brighter.pixels) v += 0.25f;
+  r.add(renderedAt(brighter, 2, r.nextJitter()));
+  EXPECT_FLOAT_EQ(r.lastChange(), 0.25f);
+  ImageBuffer broken = truth;
+  broken.pixels.assign(broken.pixels.size(), NAN);
+  r.add(renderedAt(broken, 2, r.nextJitter()));
+  EXPECT_GE(r.lastChange(), 1.0f);  // NaN is a change, not a settled image
+  r.reset(12, 8, 2);
+  EXPECT_TRUE(std::isinf(r.lastChange()));
+}
+
 TEST(ProgressiveRefinement, TheFirstFrameFillsEveryPixelAndAResetForgets) {
   const ImageBuffer truth = viewportImage(16, 8);
   ProgressiveRefinement r;

@@ -37,7 +37,7 @@ bool RenderFactor::renders(float frameMs, float budgetMs, const RefinementState&
     paused_ = false;
     slowComplete_ = 0;
   } else if (!paused_ && !shownOnly_) {
-    slowComplete_ = refinement.complete && frameMs > kFarOver * budgetMs ? slowComplete_ + 1 : 0;
+    slowComplete_ = refinement.settled && frameMs > kFarOver * budgetMs ? slowComplete_ + 1 : 0;
     paused_ = slowComplete_ >= kFarOffFrames;
   }
   if (paused_) shownOnly_ = true;

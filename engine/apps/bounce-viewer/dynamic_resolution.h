@@ -47,6 +47,9 @@ struct RefinementState {
   bool viewChanged = true;  ///< camera, size, scene or settings changed: it starts over
   uint32_t factor = 1;      ///< the factor it refines at
   bool complete = false;    ///< every viewport pixel has been rendered exactly
+  /// Complete, and re-rendering it changes nothing visible (ProgressiveRefinement::lastChange
+  /// under one 8-bit display level): no technique is still converging on it.
+  bool settled = false;
 };
 
 class RenderFactor {
@@ -57,11 +60,11 @@ class RenderFactor {
   static constexpr float kFarOver = 4.0f / 3.0f, kFarUnder = 0.5f;
 
   /// Whether the next frame renders the scene, after one shown `frameMs` wall-clock
-  /// milliseconds after the previous one. A complete still view whose frames stayed beyond
-  /// ×4/3 of the budget for kFarOffFrames is shown as it is, with the UI, until anything
-  /// changes: it is the full-resolution image already, and rendering it again held the UI
-  /// at the scene's rate (0.55 frames/s with VPL at 50% of the default window). Any
-  /// technique that refines over time (DDGI's probes) pauses with it.
+  /// milliseconds after the previous one. A settled still view (complete, and its frames
+  /// change nothing visible) whose frames stayed beyond ×4/3 of the budget for
+  /// kFarOffFrames is shown as it is, with the UI, until anything changes: rendering it
+  /// again held the UI at the scene's rate (0.55 frames/s with VPL at 50% of the default
+  /// window). A view a technique is still converging on (DDGI's probes) renders on.
   bool renders(float frameMs, float budgetMs, const RefinementState& refinement);
   /// The factor of the next frame with dynamic resolution on, after one shown `frameMs`
   /// wall-clock milliseconds after the previous one (not counted when it only showed the
@@ -77,7 +80,7 @@ class RenderFactor {
  private:
   DynamicResolution controller_;
   uint32_t farOffFrames_ = 0;  ///< consecutive still frames far from the budget
-  uint32_t slowComplete_ = 0;  ///< consecutive frames of a complete view far over it
+  uint32_t slowComplete_ = 0;  ///< consecutive frames of a settled view far over it
   bool paused_ = false;        ///< a complete view shown as it is
   bool shownOnly_ = false;     ///< the last frame only showed the image
 };

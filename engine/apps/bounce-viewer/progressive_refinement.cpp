@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <thread>
 
 namespace bounce::viewer {
@@ -121,6 +122,7 @@ void ProgressiveRefinement::reset(uint32_t width, uint32_t height, uint32_t fact
   height_ = std::max(1u, height);
   factor_ = std::clamp(factor, 1u, 16u);
   frames_ = 0;
+  lastChange_ = std::numeric_limits<float>::infinity();
   known_.assign(size_t(width_) * height_, 0);
   exact_ = {};
   if (order_.size() != size_t(factor_) * factor_) order_ = jitterOrder(factor_);
@@ -142,13 +144,22 @@ const ImageBuffer& ProgressiveRefinement::add(const ImageBuffer& frame) {
   const glm::uvec2 j = fits ? nextJitter() : glm::uvec2(factor_ / 2);
   if (fits) {
     if (exact_.width != width_ || exact_.channels != c) exact_ = ImageBuffer(width_, height_, c, 0.0f);
+    // How far the frame moved pixels it rendered before (a technique still converging, or
+    // an animation), over every channel; NaN compares as a change.
+    float change = 0.0f;
     for (uint32_t y = 0; y < frame.height; ++y)
       for (uint32_t x = 0; x < frame.width; ++x) {
         const uint32_t X = x * factor_ + j.x, Y = y * factor_ + j.y;
         if (X >= width_ || Y >= height_) continue;
-        for (uint32_t k = 0; k < c; ++k) exact_.at(X, Y, k) = frame.at(x, y, k);
+        const bool before = known_[size_t(Y) * width_ + X] != 0;
+        for (uint32_t k = 0; k < c; ++k) {
+          const float v = frame.at(x, y, k);
+          if (before) change = std::max(change, std::isnan(v) ? 1.0f : std::fabs(v - exact_.at(X, Y, k)));
+          exact_.at(X, Y, k) = v;
+        }
         known_[size_t(Y) * width_ + X] = 1;
       }
+    lastChange_ = frames_ >= factor_ * factor_ ? change : std::numeric_limits<float>::infinity();
     ++frames_;
   }
   // The rest: the latest frame, bilinear between its pixel centres, which sit on the

@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace bounce::viewer {
@@ -39,10 +40,15 @@ class ProgressiveRefinement {
   uint32_t frames() const { return frames_; }
   /// True once every viewport pixel has been rendered exactly.
   bool complete() const { return frames_ >= factor_ * factor_; }
+  /// The largest change (any channel) the last frame made to pixels already rendered, once
+  /// the view was complete before it; infinite until then. A complete view whose frames
+  /// change nothing visible has settled: re-rendering it shows the same image.
+  float lastChange() const { return lastChange_; }
 
  private:
   uint32_t width_ = 0, height_ = 0, factor_ = 1;
   uint32_t frames_ = 0;
+  float lastChange_ = std::numeric_limits<float>::infinity();
   ImageBuffer exact_;           ///< pixels rendered exactly so far
   std::vector<uint8_t> known_;  ///< 1 where exact_ holds a rendered value
   ImageBuffer shown_;

@@ -173,8 +173,8 @@ void Viewer::renderFrames(uint32_t count) { framesToRender_ = std::max(framesToR
 
 void Viewer::measureFrames(uint32_t count) {
   renderFrames(count);
-  frameRun_ = FrameRun{framesToRender_, std::chrono::steady_clock::now(),
-                       {lastFrame_.renderWidth, lastFrame_.renderHeight}};
+  frameRun_ = FrameRun{
+      framesToRender_, std::chrono::steady_clock::now(), {lastFrame_.renderWidth, lastFrame_.renderHeight}};
 }
 
 void Viewer::reportFrameRun() {
@@ -475,10 +475,13 @@ void Viewer::renderAndPresent() {
   const FrameView full = FrameView::fromCamera(camera_->camera(), rect.extent.width, rect.extent.height);
   if (camera_->takeCut()) renderer_->cutHistory();
   const uint64_t state = refinementState(full);
-  const RefinementState refinement{.viewChanged = state != refinementState_,
-                                   .factor = refinement_.factor(),
-                                   .complete = refinement_.complete()};
-  // A complete still view far over budget is shown as it is (RenderFactor::renders), so the
+  // Settled: the last frame changed no pixel by a level of the 8-bit display.
+  const RefinementState refinement{
+      .viewChanged = state != refinementState_,
+      .factor = refinement_.factor(),
+      .complete = refinement_.complete(),
+      .settled = refinement_.complete() && refinement_.lastChange() < 1.0f / 255.0f};
+  // A settled still view far over budget is shown as it is (RenderFactor::renders), so the
   // UI keeps its pace; a screenshot renders all the same (it writes the HDR image too).
   const float budgetMs = engine_->rendererSettings().dynamicResFrameTimeBudgetMs.get();
   std::optional<ImageBuffer> hdr;

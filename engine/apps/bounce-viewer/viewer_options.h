@@ -17,7 +17,7 @@ struct ViewerOptions {
   std::vector<std::string> enablePlugins;
   std::vector<std::string> disablePlugins;
   std::vector<std::string> pluginDirs;  ///< --plugin-dir (EngineOptions::pluginDirs)
-  std::string script;  ///< console lines and viewer actions, run one by one
+  std::string script;                   ///< console lines and viewer actions, run one by one
   std::string device;
   uint32_t width = 1280;
   uint32_t height = 720;
