@@ -102,8 +102,10 @@ TEST_F(ShaderHotReloadTest, ABrokenEditKeepsTheLastGoodPipelineAndAFixReplacesIt
   ASSERT_EQ(run(good), 1u);
 
   // Nothing changed: nothing is rebuilt (a rebuilt pipeline is a new object).
+  const uint64_t generation = cache->generation();
   EXPECT_TRUE(cache->reloadChanged().empty());
   EXPECT_EQ(&cache->compute(source), &good);
+  EXPECT_EQ(cache->generation(), generation);
 
   // A syntax error: one error, one line, naming the file and line...
   edit("reload.comp", writer("2u +"));
@@ -115,13 +117,16 @@ TEST_F(ShaderHotReloadTest, ABrokenEditKeepsTheLastGoodPipelineAndAFixReplacesIt
   // ...while the last good pipeline stays in the cache and still runs.
   EXPECT_EQ(&cache->compute(source), &good);
   EXPECT_EQ(run(cache->compute(source)), 1u);
-  // The broken file is not retried until it changes again.
+  // The broken file is not retried until it changes again; nothing was rebuilt.
   EXPECT_TRUE(cache->reloadChanged().empty());
+  EXPECT_EQ(cache->generation(), generation);
 
-  // The fix is picked up: a new pipeline that writes the new value.
+  // The fix is picked up: a new pipeline that writes the new value, and the generation
+  // moves (what was rendered before may look different now).
   edit("reload.comp", writer("3u"));
   EXPECT_TRUE(cache->reloadChanged().empty());
   EXPECT_EQ(run(cache->compute(source)), 3u);
+  EXPECT_EQ(cache->generation(), generation + 1);
 }
 
 TEST_F(ShaderHotReloadTest, AnEditToAnIncludedFileRebuildsThePipelinesThatIncludeIt) {

@@ -197,9 +197,11 @@ void Viewer::reportFrameRun() {
 }
 
 uint64_t Viewer::refinementState(const FrameView& view) const {
-  // Anything that changes the image: the view (camera, size), the scene and every
-  // setting. Hashing the settings' values each frame costs microseconds.
-  std::string key = fmt::format("{} {} {}", view.width, view.height, engine_->scene()->revision());
+  // Anything that changes the image: the view (camera, size), the scene, every setting and
+  // the shaders (a hot-reloaded pipeline). Hashing the settings' values each frame costs
+  // microseconds.
+  std::string key = fmt::format("{} {} {} {}", view.width, view.height, engine_->scene()->revision(),
+                                renderer_->pipelines().generation());
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) key += fmt::format(" {} {}", view.view[c][r], view.projection[c][r]);
   for (const CVar* cvar : engine_->cvars().list()) key += cvar->valueText();

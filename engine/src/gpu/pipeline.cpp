@@ -287,6 +287,7 @@ std::vector<std::string> PipelineCache::reloadChanged() {
       e->pipeline = std::move(rebuilt);
       e->stamps.clear();
       for (const auto& f : e->pipeline->files()) e->stamps.emplace_back(f, stamp(f));
+      ++generation_;
     } catch (const std::exception& ex) {
       errors.push_back(ex.what());
     }

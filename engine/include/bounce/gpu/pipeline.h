@@ -98,6 +98,9 @@ class PipelineCache {
   /// source fails to compile keeps working with its last good version; the errors are
   /// returned (one per failed pipeline, "file:line: message").
   std::vector<std::string> reloadChanged();
+  /// Counts the pipelines reloadChanged() has rebuilt: when it moves, what was rendered
+  /// before may look different now (the viewer restarts its refinement).
+  uint64_t generation() const { return generation_; }
   ShaderCompiler& compiler() { return compiler_; }
   size_t size() const { return entries_.size(); }
 
@@ -108,6 +111,7 @@ class PipelineCache {
   ShaderCompiler& compiler_;
   std::vector<std::unique_ptr<Entry>> entries_;
   bool workCounting_ = false;
+  uint64_t generation_ = 0;
 };
 
 /// Descriptor writes for one pipeline's push-descriptor set, by binding name.
