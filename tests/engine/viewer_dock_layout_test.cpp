@@ -184,7 +184,9 @@ TEST(RenderFactor, ACompleteViewFarOverBudgetIsShownAsItIsUntilTheViewChanges) {
   // kFarOffFrames busy frames render, at the factor a complete view keeps.
   for (uint32_t i = 0; i < RenderFactor::kFarOffFrames; ++i) EXPECT_EQ(loop.frame(false), 6u) << i;
   // Then only the image is shown, so the UI keeps its pace, however long it stays still.
+  EXPECT_FALSE(loop.control.paused());
   for (int i = 0; i < 100; ++i) EXPECT_EQ(loop.frame(false), 0u) << i;
+  EXPECT_TRUE(loop.control.paused());  // what the Frame panel says
   // The busy frames lowered the controller (to its 10% minimum); the 10 ms frames that only
   // showed the image did not raise it: the camera moves and renders at 10%.
   EXPECT_EQ(loop.frame(true), 10u);

@@ -76,6 +76,8 @@ class RenderFactor {
     return factorForPercent(percent);
   }
   float percent() const { return controller_.current(); }
+  /// True while renders() says no.
+  bool paused() const { return paused_; }
 
  private:
   DynamicResolution controller_;

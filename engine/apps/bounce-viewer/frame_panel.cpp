@@ -62,6 +62,14 @@ void drawFramePanel(Viewer& viewer, bool* open) {
     ImGui::SetTooltip(
         "r.DynamicRes.OperationMode 0 fixes the resolution at r.ScreenPercentage; "
         "r.DynamicRes.FrameTimeBudgetMs sets the frame time dynamic resolution aims for.");
+  // The rate above is then the UI's, and the timings below the last rendered frame's.
+  if (viewer.showingWithoutRendering()) {
+    ImGui::TextDisabled("image complete; not re-rendering");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "The view is complete and settled, and its frames took over 4/3 of the frame-time budget: "
+          "it is shown as it is, so the UI keeps its pace. Anything that changes the view renders again.");
+  }
   const std::vector<float> history(viewer.frameHistory().begin(), viewer.frameHistory().end());
   if (!history.empty())
     ImGui::PlotLines("##history", history.data(), int(history.size()), 0, "GPU ms per frame", 0.0f, FLT_MAX,

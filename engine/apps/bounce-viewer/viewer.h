@@ -86,6 +86,8 @@ class Viewer {
   const DockLayout& dockLayout() const { return layout_; }
   /// Wall-clock milliseconds of the last frame shown (render, UI and presentation).
   float wallFrameMs() const { return wallFrameMs_; }
+  /// A settled view far over budget is shown without rendering (RenderFactor::renders).
+  bool showingWithoutRendering() const { return renderFactor_.paused(); }
   const gpu::Device& device() const { return *device_; }
   VkExtent2D windowExtent() const { return presenter_->extent(); }
 
