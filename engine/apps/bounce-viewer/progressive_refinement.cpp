@@ -162,6 +162,11 @@ const ImageBuffer& ProgressiveRefinement::add(const ImageBuffer& frame) {
     lastChange_ = frames_ >= factor_ * factor_ ? change : std::numeric_limits<float>::infinity();
     ++frames_;
   }
+  // Complete: every viewport pixel is exact, nothing to interpolate.
+  if (fits && complete()) {
+    shown_ = exact_;
+    return shown_;
+  }
   // The rest: the latest frame, bilinear between its pixel centres, which sit on the
   // viewport's pixels x·factor + j; rendered pixels are exact.
   const float step = 1.0f / float(factor_);

@@ -45,11 +45,10 @@ void main() {
   // for on lavapipe an image store costs even where a branch masks every lane off: at 128³
   // the coarser levels' resolves, air only by their counters, took 2.3–2.5, 0.7, 0.2–0.3
   // and 0.2 ms, and 0.06 each without these bricks.
-  int perAxis = vxgiBricksPerAxis(), shift = findLSB(perAxis);
-  ivec3 b = ivec3(brick & (perAxis - 1), (brick >> shift) & (perAxis - 1), brick >> (2 * shift));
   uint flags = brickFlags[i];
   bool downsampledOnly = flags == VXGI_BRICK_DOWNSAMPLED;
-  if (occupied || (flags != 0u && !(downsampledOnly && vxgiInnerBoxHolds(b << VXGI_BRICK_SHIFT, 4, pc.level)))) {
+  ivec3 firstVoxel = vxgiBrickCoord(brick) << VXGI_BRICK_SHIFT;
+  if (occupied || (flags != 0u && !(downsampledOnly && vxgiInnerBoxHolds(firstVoxel, 4, pc.level)))) {
     uint slot = atomicAdd(listedBricks, 1u);
     bricks[slot] = uint(brick);
     // One more workgroup for every bricksPerGroup bricks listed.

@@ -177,9 +177,7 @@ void main() {
   for (int k = 0; k < pc.bricksPerGroup; ++k) {
     uint slot = gl_WorkGroupID.x * uint(pc.bricksPerGroup) + uint(k);
     if (slot >= listedBricks) return;
-    // n is a power of two: masks and shifts, not a division per lane.
-    int brick = int(bricks[slot]), n = vxgiBricksPerAxis(), shift = findLSB(n);
-    ivec3 b = ivec3(brick & (n - 1), (brick >> shift) & (n - 1), brick >> (2 * shift));
+    ivec3 b = vxgiBrickCoord(int(bricks[slot]));
     resolveVoxel((b << VXGI_BRICK_SHIFT) + ivec3(gl_LocalInvocationID), level);
   }
 #else

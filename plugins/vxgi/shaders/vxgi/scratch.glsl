@@ -30,6 +30,12 @@ int vxgiBrickIndex(ivec3 t) {
   int n = vxgiBricksPerAxis();
   return (b.z * n + b.y) * n + b.x;
 }
+// The brick coordinates of brick index `brick` (vxgiBrickIndex's inverse). The bricks per
+// axis are a power of two: masks and shifts, not a division per lane.
+ivec3 vxgiBrickCoord(int brick) {
+  int n = vxgiBricksPerAxis(), shift = findLSB(n);
+  return ivec3(brick & (n - 1), (brick >> shift) & (n - 1), brick >> (2 * shift));
+}
 
 // Whether voxels first .. first + extent − 1 (per axis, toroidally) all lie in the inner box
 // of `level`: the finer level's extent (its origin halved, mapSize / 2 wide), which this
