@@ -9,6 +9,10 @@
 //                           covers)
 //   VXGI_DOWNSAMPLE_MODE 1: the coarsest clipped level → mip 0 of the pyramid
 //   VXGI_DOWNSAMPLE_MODE 2: pyramid mip m → mip m+1
+//   VXGI_DOWNSAMPLE_MODE 3: the pyramid's tail, the mips of one 4³ block or less, each
+//                           from the one before, in one workgroup (a dispatch costs
+//                           lavapipe ~60 µs however little it does, and these are a few
+//                           dozen voxels each)
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
@@ -19,7 +23,8 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(push_constant) uniform Push {
   ivec4 dstMin;   // mode 0: first voxel (world voxels of the destination level), w: level; else x: the
-                  // mip's first block in VxgiMipFlags and VxgiMipBlocks, y: the mip
+                  // mip's first block in VxgiMipFlags and VxgiMipBlocks, y: the mip (mode 3: the
+                  // first of the tail's), z: mode 3: the mips in the tail
   ivec4 dstSize;  // voxels to write; w: bricks (blocks) each workgroup takes from the list
 } pc;
 
@@ -29,22 +34,36 @@ layout(push_constant) uniform Push {
 #define VOXEL_FORMAT rgba16f
 #endif
 
+// The tail's mips read what the workgroup stored for the mip before: made visible by
+// memoryBarrierImage() and barrier() between mips, on images declared coherent.
+#if VXGI_DOWNSAMPLE_MODE == 3
+#define SRC_ACCESS coherent readonly
+#define DST_ACCESS coherent writeonly
+#else
+#define SRC_ACCESS readonly
+#define DST_ACCESS writeonly
+#endif
+
 // Every mode reads and writes the stacked textures (clip_map.glsl: levels along Z, facing
 // signs along Y, the pyramid's mips in the slab after the levels): texture a holds facing
 // directions ±a (or, without emittance, three directions per texture). Source and
 // destination are the same textures, disjoint parts of them.
-layout(binding = 40, VOXEL_FORMAT) uniform readonly image3D voxelsSrc0;
-layout(binding = 30, VOXEL_FORMAT) uniform writeonly image3D voxelsDst0;
+layout(binding = 40, VOXEL_FORMAT) uniform SRC_ACCESS image3D voxelsSrc0;
+layout(binding = 30, VOXEL_FORMAT) uniform DST_ACCESS image3D voxelsDst0;
 #if VXGI_DIRECTIONS == 6 || !VXGI_AO_MODE
-layout(binding = 41, VOXEL_FORMAT) uniform readonly image3D voxelsSrc1;
-layout(binding = 31, VOXEL_FORMAT) uniform writeonly image3D voxelsDst1;
+layout(binding = 41, VOXEL_FORMAT) uniform SRC_ACCESS image3D voxelsSrc1;
+layout(binding = 31, VOXEL_FORMAT) uniform DST_ACCESS image3D voxelsDst1;
 #endif
 #if !VXGI_AO_MODE
-layout(binding = 42, VOXEL_FORMAT) uniform readonly image3D voxelsSrc2;
-layout(binding = 32, VOXEL_FORMAT) uniform writeonly image3D voxelsDst2;
+layout(binding = 42, VOXEL_FORMAT) uniform SRC_ACCESS image3D voxelsSrc2;
+layout(binding = 32, VOXEL_FORMAT) uniform DST_ACCESS image3D voxelsDst2;
 #endif
 // The facing sign a texture holds direction 3..5 at.
 #define NEGATIVE (VXGI_SIGNS == 2 ? 1 : 0)
+
+// Modes 1–3: the mip computed, and where its blocks start in VxgiMipFlags and VxgiMipBlocks
+// (pc.dstMin.y and .x; the tail sets them per mip).
+int dstMip = 0, dstBlocks = 0;
 
 // Where child `o` (0/1 per axis) of output voxel `local` lives in the source image.
 ivec3 childCoord(ivec3 local, ivec3 o, int sign) {
@@ -54,7 +73,7 @@ ivec3 childCoord(ivec3 local, ivec3 o, int sign) {
 #elif VXGI_DOWNSAMPLE_MODE == 1
   return vxgiStorageTexel(2 * local + o, clipMap.levelCount - 1, sign);  // local is toroidal already
 #else
-  return vxgiMipTexel(2 * local + o, pc.dstMin.y - 1, sign);
+  return vxgiMipTexel(2 * local + o, dstMip - 1, sign);
 #endif
 }
 
@@ -118,14 +137,15 @@ layout(std430, binding = 63) readonly buffer VxgiDownsampleBricks {
 #define STORE_TEXEL(image, sign, local, v) VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, v)
 #else
 // Modes 1 and 2 run over the 4³ blocks of the mip mip_list.comp listed (by indirect
-// dispatch, pc.dstSize.w blocks per workgroup), and flag those they store something in.
+// dispatch, pc.dstSize.w blocks per workgroup), mode 3 over those of each tail mip, and
+// flag those they store something in.
 // VxgiMipFlags: per block of every mip, 0 when all its texels are known to be zero.
 layout(std430, binding = 64) buffer VxgiMipFlags { uint mipFlags[]; };
 layout(std430, binding = 63) readonly buffer VxgiMipBlocks {
   uint listedBlocks[8];  // per mip
-  uint blocks[];         // this mip's from pc.dstMin.x: x | y << 8 | z << 16
+  uint blocks[];         // this mip's from dstBlocks: x | y << 8 | z << 16
 };
-#define STORE_TEXEL(image, sign, local, v) imageStore(image, vxgiMipTexel(local, pc.dstMin.y, sign), v);
+#define STORE_TEXEL(image, sign, local, v) imageStore(image, vxgiMipTexel(local, dstMip, sign), v);
 #endif
 
 #if VXGI_AO_MODE
@@ -184,6 +204,19 @@ void downsampleVoxel(ivec3 local) {
 #endif
 }
 
+#if VXGI_DOWNSAMPLE_MODE != 0
+// Listed block `slot` of mip dstMip, whose voxels per side are `size`.
+void downsampleBlock(uint slot, int size) {
+  int perAxis = (size + 3) / 4;
+  uint packed = blocks[dstBlocks + int(slot)];
+  ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
+  ivec3 local = (block << 2) + ivec3(gl_LocalInvocationID);
+  if (!all(lessThan(local, ivec3(size)))) return;  // a mip under 4 voxels
+  downsampleVoxel(local);
+  if (storedSomething) atomicOr(mipFlags[dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
+}
+#endif
+
 void main() {
 #if VXGI_DOWNSAMPLE_MODE == 0
   for (int k = 0; k < pc.dstSize.w; ++k) {
@@ -196,17 +229,24 @@ void main() {
     // The brick may reach past the inner box, whose bounds need not be brick-aligned.
     if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, pc.dstSize.xyz))) downsampleVoxel(local);
   }
-#else
-  int perAxis = (pc.dstSize.x + 3) / 4;
+#elif VXGI_DOWNSAMPLE_MODE != 3
+  dstMip = pc.dstMin.y;
+  dstBlocks = pc.dstMin.x;
   for (int k = 0; k < pc.dstSize.w; ++k) {
     uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
-    if (slot >= listedBlocks[pc.dstMin.y]) return;
-    uint packed = blocks[pc.dstMin.x + int(slot)];
-    ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
-    ivec3 local = (block << 2) + ivec3(gl_LocalInvocationID);
-    if (!all(lessThan(local, pc.dstSize.xyz))) continue;  // a mip under 4 voxels
-    downsampleVoxel(local);
-    if (storedSomething) atomicOr(mipFlags[pc.dstMin.x + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
+    if (slot >= listedBlocks[dstMip]) return;
+    downsampleBlock(slot, pc.dstSize.x);
+  }
+#else
+  dstMip = pc.dstMin.y;
+  dstBlocks = pc.dstMin.x;
+  for (int m = 0; m < pc.dstMin.z; ++m, ++dstMip) {
+    int size = max(clipMap.mapSize >> (dstMip + 1), 1), perAxis = (size + 3) / 4;
+    // The same count for the whole workgroup: barrier() below stays in uniform control flow.
+    for (uint slot = 0u; slot < listedBlocks[dstMip]; ++slot) downsampleBlock(slot, size);
+    memoryBarrierImage();
+    barrier();
+    dstBlocks += perAxis * perAxis * perAxis;
   }
 #endif
 }
