@@ -213,22 +213,30 @@ struct VxgiLevels {
   float blend;  // weight of the coarser one
   float used;   // footprint the blended value is per
 };
-bool vxgiChooseLevels(vec3 p, float d, out VxgiLevels c) {
-  c.used = max(d, clipMap.voxelSize0);
-  float lod = log2(c.used * clipMap.reciprocals.w);
-  int last = clipMap.levelCount - 1, top = vxgiStorageLevels() - 1;
+// The levels for a footprint of `used` (≥ the finest voxel; lod = log2(used / finest
+// voxel)) where the finest level holding p is `finest` (≥ 0). The levels are nested
+// (ClipMapLayout::place: each lies inside the next with a quarter of the next's width to
+// spare), so the finest level holding p from level l on is max(finest, l).
+VxgiLevels vxgiLevelsAt(float lod, float used, int finest) {
+  VxgiLevels c;
+  int top = vxgiStorageLevels() - 1;
   int level = min(int(floor(lod)), top);
   c.blend = level < top ? fract(lod) : 0.0;
-  c.level = vxgiFinestLevelAt(p, min(level, last));
-  if (c.level < 0) return false;
-  if (c.level > level) {  // p is past the finer level's edge: the coarser alone
+  c.level = max(finest, level);  // the pyramid past the coarsest clipped level
+  c.used = used;
+  if (finest > level) {  // p is past the finer level's edge: the coarser alone
     c.blend = 0.0;
-    c.used = vxgiVoxelSize(c.level);
-  } else {
-    c.level = max(c.level, level);  // the pyramid, inside the coarsest level
+    c.used = vxgiVoxelSize(finest);
   }
   c.coarser = min(c.level + 1, top);
-  return true;
+  return c;
+}
+bool vxgiChooseLevels(vec3 p, float d, out VxgiLevels c) {
+  float used = max(d, clipMap.voxelSize0);
+  float lod = log2(used * clipMap.reciprocals.w);
+  int finest = vxgiFinestLevelAt(p, min(int(floor(lod)), clipMap.levelCount - 1));
+  c = vxgiLevelsAt(lod, used, max(finest, 0));
+  return finest >= 0;
 }
 
 #if VXGI_AO_MODE
@@ -334,25 +342,66 @@ vec3 vxgiCoarsePosition(vec3 p, VxgiConeStart cone, int axis, float v) {
   return p + cone.normal * max(below, 0.0);
 }
 
-// One facing slot (texture `clip`) at footprint d around p, from the levels
-// vxgiChooseLevels picks (clipped levels or mips alike: two fetches of one texture); the
-// coarser one read at vxgiCoarsePosition. `used`: the footprint the value is per (wider
-// than d where p lies outside the finer levels). A macro because GLSL cannot pass a
-// sampler chosen at run time.
+// Where a step's sample lies, which its three slots share: each slot is the sample moved
+// along the slot's own axis (vxgiClipToApex), so whether it stays inside a level is one
+// comparison per bound along that axis, not a search of the levels per slot (a loop, and
+// ~5% of DiffuseTracing's time on lavapipe).
+struct VxgiPlace {
+  vec3 p;            // the step's sample
+  float used;        // its footprint (VxgiLevels.used)
+  float lod;         // log2 of that in finest voxels
+  int finest;        // the finest level holding p, searched from one level finer than
+                     // the footprint's: a slot's footprint is down to half of it
+  vec3 belowFinest;  // how far p may move along −x, −y, −z and stay in `finest` (m)
+  vec3 aboveFinest;  // ... along +x, +y, +z (strictly less)
+  vec3 belowLast;    // the same for the coarsest clipped level
+  vec3 aboveLast;
+};
+// Level `level`'s trilinear footprints are whole (vxgiInsideLevel) for positions in
+// [(origin + ½)·v, (origin + n − ½)·v) along each axis.
+void vxgiLevelRoom(vec3 p, int level, out vec3 below, out vec3 above) {
+  vec3 origin = vec3(clipMap.levelOrigin[level].xyz);
+  float v = vxgiVoxelSize(level);
+  below = p - (origin + 0.5) * v;
+  above = (origin + (float(clipMap.mapSize) - 0.5)) * v - p;
+}
+VxgiPlace vxgiPlaceOf(vec3 p, float lod, int from) {
+  VxgiPlace place;
+  place.p = p;
+  place.lod = lod;
+  place.finest = vxgiFinestLevelAt(p, from);
+  vxgiLevelRoom(p, max(place.finest, 0), place.belowFinest, place.aboveFinest);
+  vxgiLevelRoom(p, clipMap.levelCount - 1, place.belowLast, place.aboveLast);
+  return place;
+}
+
+// One facing slot (texture `clip`) at the step's place moved to q along the slot's axis,
+// with footprint `k` × the step's (vxgiClipToApex), from the levels vxgiLevelsAt picks
+// (clipped levels or mips alike: two fetches of one texture); the coarser one read at
+// vxgiCoarsePosition. `used`: the footprint the value is per (wider than the footprint
+// where q lies outside the finer levels). A macro because GLSL cannot pass a sampler
+// chosen at run time.
 #define VXGI_DEFINE_SLOT(name, clip, axis)                                                 \
-  vec4 name(vec3 p, float d, VxgiConeStart cone, out float used) {                         \
-    VxgiLevels c;                                                                          \
-    used = max(d, clipMap.voxelSize0);                                                     \
-    if (!vxgiChooseLevels(p, d, c)) return vec4(0.0); /* outside the clip-map */           \
+  vec4 name(vec3 q, float k, VxgiConeStart cone, VxgiPlace place, out float used) {        \
+    float shift = q[axis] - place.p[axis];                                                 \
+    /* The lod of the footprint k × the step's: log2(max(k·used, finest voxel)). */        \
+    float lod = max(place.lod + log2(k), 0.0);                                             \
+    used = max(k * place.used, clipMap.voxelSize0);                                        \
+    if (shift < -place.belowLast[axis] || shift >= place.aboveLast[axis])                  \
+      return vec4(0.0); /* outside the clip-map */                                         \
+    /* q is in p's finest level, or else in the next (the levels are nested with room to \
+       spare, and q lies within a footprint of p). */                                      \
+    bool inFinest = shift >= -place.belowFinest[axis] && shift < place.aboveFinest[axis];  \
+    VxgiLevels c = vxgiLevelsAt(lod, used, place.finest + (inFinest ? 0 : 1));              \
     used = c.used;                                                                         \
     float positive = cone.direction[axis] > 0.0 ? 1.0 : 0.0;                               \
     vec3 signOffset = vec3(0.0, positive * vxgiSignOffset() * float(VXGI_SIGNS - 1), 0.0);  \
     vxgiFetches += 2u;                                                                     \
-    vec3 q = vxgiCoarsePosition(p, cone, axis, vxgiVoxelSize(c.coarser));                  \
+    vec3 qc = vxgiCoarsePosition(q, cone, axis, vxgiVoxelSize(c.coarser));                 \
     /* Two mips are read where the coarser must be: the pair a mipmapped fetch blends. */  \
-    vec3 pa = c.level >= clipMap.levelCount ? q : p;                                       \
-    vec4 a = textureLod(clip, vxgiStackCoord(pa, c.level) + signOffset, 0.0);              \
-    return mix(a, textureLod(clip, vxgiStackCoord(q, c.coarser) + signOffset, 0.0), c.blend); \
+    vec3 qa = c.level >= clipMap.levelCount ? qc : q;                                      \
+    vec4 a = textureLod(clip, vxgiStackCoord(qa, c.level) + signOffset, 0.0);              \
+    return mix(a, textureLod(clip, vxgiStackCoord(qc, c.coarser) + signOffset, 0.0), c.blend); \
   }
 VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, 0)
 VXGI_DEFINE_SLOT(vxgiSlotY, voxelsClip1, 1)
@@ -368,18 +417,19 @@ VXGI_DEFINE_SLOT(vxgiSlotZ, voxelsClip2, 2)
 // leak further but lost the light of a 2 cm emitter (VXGI's README, "Known gaps").
 const float VXGI_APEX_REACH = 1.5;
 
-// Where slot `axis` is sampled, and how wide (da): the filter of footprint d around p
+// Where slot `axis` is sampled, and how wide (k × d): the filter of footprint d around p
 // spans VXGI_APEX_REACH·d each way along the axis; the part behind the apex's plane is
 // cut off and the filter narrows to what is left, keeping its front edge. A filter wholly
-// ahead of the plane is unchanged, and one centred on the plane keeps its front half.
-void vxgiClipToApex(vec3 p, float d, VxgiConeStart cone, int axis, out vec3 q, out float da) {
+// ahead of the plane is unchanged (k = 1), and one centred on the plane keeps its front
+// half (k = ½).
+void vxgiClipToApex(vec3 p, float d, VxgiConeStart cone, int axis, out vec3 q, out float k) {
   float s = cone.direction[axis] >= 0.0 ? 1.0 : -1.0;
   float ahead = max(s * (p[axis] - cone.apex[axis]), 0.0);  // p's distance in front of the plane
   float h = VXGI_APEX_REACH * d;
   float kept = min(0.5 * (ahead + h), h);  // half-width left, ≥ h / 2
   q = p;
   q[axis] = cone.apex[axis] + s * (ahead + h - kept);
-  da = d * kept / h;
+  k = kept / h;
 }
 
 // vxgiSample for a sample of `cone`: each facing slot reads only what lies in front of
@@ -391,16 +441,24 @@ VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, VxgiConeStart cone, out
   s.density = 0.0;
   // The footprint the caller steps by, widened where p lies outside the levels fine
   // enough for it.
-  VxgiLevels c;
-  valid = vxgiChooseLevels(p, diameter, c);
+  float used = max(diameter, clipMap.voxelSize0);
+  float lod = log2(used * clipMap.reciprocals.w);
+  int from = min(int(floor(lod)), clipMap.levelCount - 1);
+  // One level finer than the footprint's: the slots' footprints are down to half of it.
+  VxgiPlace place = vxgiPlaceOf(p, lod, max(from - 1, 0));
+  valid = place.finest >= 0;
   if (!valid) return s;
+  VxgiLevels c = vxgiLevelsAt(lod, used, max(place.finest, from));
   diameter = c.used;
+  place.used = c.used;
+  place.lod = log2(c.used * clipMap.reciprocals.w);
   vec3 qx, qy, qz;
-  float dx, dy, dz, ux, uy, uz;
-  vxgiClipToApex(p, diameter, cone, 0, qx, dx);
-  vxgiClipToApex(p, diameter, cone, 1, qy, dy);
-  vxgiClipToApex(p, diameter, cone, 2, qz, dz);
-  vec4 x = vxgiSlotX(qx, dx, cone, ux), y = vxgiSlotY(qy, dy, cone, uy), z = vxgiSlotZ(qz, dz, cone, uz);
+  float kx, ky, kz, ux, uy, uz;
+  vxgiClipToApex(p, diameter, cone, 0, qx, kx);
+  vxgiClipToApex(p, diameter, cone, 1, qy, ky);
+  vxgiClipToApex(p, diameter, cone, 2, qz, kz);
+  vec4 x = vxgiSlotX(qx, kx, cone, place, ux), y = vxgiSlotY(qy, ky, cone, place, uy),
+       z = vxgiSlotZ(qz, kz, cone, place, uz);
   // A slot's density (and emittance, radiance × density) is per its own footprint; the
   // caller counts optical depth per `diameter`. ux..uz ≥ the finest voxel: no division by 0.
   return vxgiCombine(cone.direction, x * (diameter / ux), y * (diameter / uy), z * (diameter / uz));
