@@ -33,6 +33,16 @@ ivec2 samplePhaseOffset(int k) {
   return ivec2(i % k, i / k);
 }
 
+// The pixel of an invocation of an 8×8 workgroup, in Morton order: the consecutive
+// invocations a SIMD group runs together (8 on lavapipe with AVX2, 32 or 64 on GPUs) take a
+// compact 4×2, 8×4 or 8×8 tile of pixels rather than a row, whose surfaces are more alike.
+ivec2 mortonPixel() {
+  uint i = gl_LocalInvocationIndex;
+  uvec2 inTile = uvec2((i & 1u) | ((i >> 1u) & 2u) | ((i >> 2u) & 4u),
+                       ((i >> 1u) & 1u) | ((i >> 2u) & 2u) | ((i >> 3u) & 4u));
+  return ivec2(gl_WorkGroupID.xy * 8u + inTile);
+}
+
 // Orthonormal basis around n (Duff et al. 2017: branchless, no singularity).
 void basis(vec3 n, out vec3 t, out vec3 b) {
   float s = n.z >= 0.0 ? 1.0 : -1.0;
