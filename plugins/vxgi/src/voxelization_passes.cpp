@@ -519,10 +519,13 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   // coarsest level (mip_list.comp); the mips are computed over just those.
   const std::vector<uint32_t> flagOffsets = mipFlagOffsets(format);
   const uint32_t mips = format.mipCount();
-  // One block per workgroup, on CPU devices too: the mips list a few dozen blocks, which
-  // groups of 8 spread over too few workgroups to keep every core busy (15% slower at
-  // 128³, 10% at 64³).
-  const uint32_t blocksPerGroup = bricksPerListGroup(flagOffsets.back(), false);
+  // Blocks per workgroup. A CPU device pays for every workgroup it starts, but the mips
+  // list only a few dozen blocks, which groups of 8 (the brick lists' choice) spread over
+  // too few workgroups to keep every core busy. VXGI.Mips of the Cornell box, fully
+  // re-voxelized every frame (three runs each, ms): 64³ 1.37–1.51 with 8 blocks a group,
+  // 1.03–1.06 with 2, 1.00–1.30 with 4, 1.18–1.25 with 1; 128³ 1.96–2.01, 1.40–1.56,
+  // 1.26–1.32 and 1.71–1.82.
+  const uint32_t blocksPerGroup = cpuDevice ? 4u : 1u;
   // The pyramid's tail: the mips of one block (4³ voxels or fewer), computed in one
   // workgroup (downsample.comp, mode 3); never mip 0, which reads the coarsest level.
   uint32_t tail = 1;
