@@ -92,6 +92,30 @@ TEST(DynamicResolution, ASlowFrameDropsFastAndTheLimitsHold) {
   for (float bad : {0.0f, -5.0f, NAN, INFINITY}) EXPECT_EQ(d.next(bad, limits), 80.0f);
 }
 
+// Switching from a cheap view to a heavy technique with the controller at 100%: one slow
+// frame may be a hitch and drops 30%, but from the second in a row the whole step to the
+// budget is taken, so the frames are back near it after two slow ones, not five.
+TEST(DynamicResolution, FramesStayingFarOverBudgetTakeTheWholeStep) {
+  DynamicResolution d;
+  const DynamicResolutionLimits limits{.budgetMs = 150.0f, .minPercent = 10.0f, .maxPercent = 100.0f};
+  for (int i = 0; i < 40; ++i) d.next(20.0f, limits);  // no GI: far under budget
+  ASSERT_EQ(d.current(), 100.0f);
+  // The heavy technique: 1500 ms at 100%, cost with the pixels (percent²).
+  auto heavy = [](float percent) { return 1500.0f * (percent / 100.0f) * (percent / 100.0f); };
+  EXPECT_NEAR(d.next(heavy(100.0f), limits), 70.0f, 1e-3f);  // the first: −30% only
+  const float second = d.next(heavy(70.0f), limits);         // 735 ms: the whole step
+  EXPECT_NEAR(second, 70.0f * std::sqrt(150.0f / 735.0f), 1e-3f);
+  EXPECT_NEAR(heavy(second), 150.0f, 1.0f);
+  // A single slow frame between fast ones is still a −30% step.
+  DynamicResolution e;
+  e.next(20.0f, limits);
+  const float before = e.current();
+  EXPECT_NEAR(e.next(1500.0f, limits), before * 0.7f, 1e-3f);
+  e.next(20.0f, limits);
+  const float again = e.current();
+  EXPECT_NEAR(e.next(1500.0f, limits), std::max(again * 0.7f, 10.0f), 1e-3f);
+}
+
 // The viewer's loop around RenderFactor: a frame rendered at `factor` is shown after
 // frameMs(factor, frame index) milliseconds, one that only shows a complete view after
 // kShowMs; the refinement starts over when the view or the factor changes, is complete

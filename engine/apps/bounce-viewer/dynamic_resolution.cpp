@@ -11,11 +11,18 @@ float DynamicResolution::next(float frameMs, const DynamicResolutionLimits& limi
   const float hi = std::max(limits.maxPercent, lo);
   if (std::isfinite(frameMs) && frameMs > 0.0f && std::isfinite(limits.budgetMs) && limits.budgetMs > 0.0f) {
     const float ratio = limits.budgetMs / frameMs;
+    // Frames in a row at least twice the budget: one may be a hitch (a pipeline compiled,
+    // the first voxelization), two in a row say the scene costs that now.
+    slowFrames_ = ratio <= 0.5f ? slowFrames_ + 1 : 0;
     // Dead band: within −10% … +5% of the budget the resolution stays (under budget by a
     // little is where it should settle; over it is what the user notices).
     if (ratio < 1.0f / 1.1f || ratio > 1.05f) {
-      // At most −30% / +10% per frame: drop fast when over budget, creep back up.
-      const float step = std::clamp(std::sqrt(ratio), 0.7f, 1.1f);
+      // At most −30% / +10% per frame: drop fast when over budget, creep back up. From the
+      // second frame in a row over twice the budget, the whole step the frame time asks
+      // for: switching from no GI to a heavy technique with the controller near 100% took
+      // five frames of seconds each at −30% a frame.
+      const float most = slowFrames_ >= 2 ? 0.0f : 0.7f;
+      const float step = std::clamp(std::sqrt(ratio), most, 1.1f);
       percent_ *= step;
     }
   }

@@ -27,7 +27,9 @@ class DynamicResolution {
   static constexpr float kStartPercent = 25.0f;
 
   /// The screen percentage for the next frame, after one that took `frameMs` wall-clock
-  /// milliseconds (non-finite or non-positive times leave it unchanged).
+  /// milliseconds (non-finite or non-positive times leave it unchanged). It drops at most
+  /// 30% a frame, except from the second frame in a row over twice the budget, when it
+  /// takes the whole step to the budget.
   float next(float frameMs, const DynamicResolutionLimits& limits);
   float current() const { return percent_; }
   /// The frames are rendering at `percent`, not at what next() asked for (a still view
@@ -37,6 +39,7 @@ class DynamicResolution {
 
  private:
   float percent_ = kStartPercent;
+  uint32_t slowFrames_ = 0;  ///< frames in a row at least twice the budget
 };
 
 /// The whole factor nearest to 100 / percent, in 1..16.
