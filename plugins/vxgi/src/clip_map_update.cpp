@@ -134,7 +134,52 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
   return p;
 }
 
+namespace {
+
+bool wholeLevel(const VoxelizationPlan& plan, uint32_t level) {
+  return plan.boxes[level].size() == 1 && plan.boxes[level][0] == plan.layout.levelBox(level);
+}
+
+bool drawsAt(const VoxelizationPlan& plan, uint32_t level) {
+  return level >= plan.draws.size() || plan.draws[level];
+}
+
+}  // namespace
+
+void ClipMapUpdate::decideResolves(VoxelizationPlan& plan) const {
+  const uint32_t levels = uint32_t(plan.boxes.size());
+  plan.resolves.assign(levels, true);
+  for (uint32_t l = 0; l < levels; ++l) {
+    if (plan.boxes[l].empty()) {
+      plan.resolves[l] = false;  // nothing voxelized at this level
+      continue;
+    }
+    const bool unchanged = committed_ && committed_->format() == plan.layout.format() &&
+                           l < committed_->levels().size() &&
+                           committed_->levelBox(l) == plan.layout.levelBox(l) &&
+                           committed_->innerBox(l) == plan.layout.innerBox(l);
+    const bool held = l >= holds_.size() || holds_[l];
+    if (wholeLevel(plan, l) && unchanged && !held && !drawsAt(plan, l)) plan.resolves[l] = false;
+  }
+}
+
 void ClipMapUpdate::commit(const VoxelizationPlan& plan) {
+  const uint32_t levels = uint32_t(plan.boxes.size());
+  std::vector<bool> holds(levels, true);
+  for (uint32_t l = 0; l < levels; ++l) {
+    const bool before = committed_ && l < holds_.size() ? holds_[l] : true;
+    const bool moved = !committed_ || l >= committed_->levels().size() ||
+                       !(committed_->levelBox(l) == plan.layout.levelBox(l)) ||
+                       !(committed_->innerBox(l) == plan.layout.innerBox(l));
+    const bool resolved = l < plan.resolves.size() ? plan.resolves[l] : !plan.boxes[l].empty();
+    if (wholeLevel(plan, l) && resolved)
+      holds[l] = drawsAt(plan, l);  // everything outside the inner box is this frame's
+    else if (wholeLevel(plan, l))
+      holds[l] = before;  // left out: nothing drawn, nothing held
+    else                  // boxes, or nothing: what was there stays, with what was drawn and moved
+      holds[l] = before || moved || (!plan.boxes[l].empty() && drawsAt(plan, l));
+  }
+  holds_ = std::move(holds);
   committed_ = plan.layout;
   sceneRevision_ = plan.sceneRevision;
   scene_ = plan.scene;

@@ -127,7 +127,74 @@ void bindStorage(gpu::Bindings& bind, const char* prefix, const std::vector<Text
   for (size_t i = 0; i < handles.size(); ++i) bind.storage(fmt::format("{}{}", prefix, i), handles[i], mip);
 }
 
+// The surfaces a level draws for the plan's boxes: those within reach of a box (a surface
+// writes up to plan.reach voxels beyond its bounds, so a thick wall just outside a
+// scrolled-in slab or a moved object's box still fills voxels inside it), unless every
+// voxel it could write lies in the inner box, which is downsampled from the finer level and
+// which voxelize.frag skips (its bounds, grown by the reach and one more voxel for the
+// dilated fragments, inside the box). On the Cornell box no surface is drawn at any level
+// but the finest.
+class LevelDrawFilter {
+ public:
+  LevelDrawFilter(const VoxelizationPlan& plan, uint32_t level) {
+    const ClipMapLayout& layout = plan.layout;
+    const float voxel = layout.levels()[level].voxelSize;
+    const float reach = float(plan.reach) * voxel;
+    for (const VoxelBox& box : plan.boxes[level]) {
+      const Aabb w = layout.worldBox(level, box);
+      boxes_.push_back(Aabb{w.min - glm::vec3(reach), w.max + glm::vec3(reach)});
+    }
+    if (level > 0) {
+      const Aabb w = layout.worldBox(level, layout.innerBox(level));
+      const glm::vec3 margin(reach + voxel);
+      inner_ = Aabb{w.min + margin, w.max - margin};
+    }
+  }
+  /// The world boxes surfaces are drawn for (the plan's boxes, grown by the reach).
+  const std::vector<Aabb>& boxes() const { return boxes_; }
+  bool insideInner(const Aabb& b) const {
+    return inner_ && glm::all(glm::greaterThanEqual(b.min, inner_->min)) &&
+           glm::all(glm::lessThanEqual(b.max, inner_->max));
+  }
+  /// Whether a surface with these world bounds is drawn for box `box` (an index into boxes()).
+  bool draws(const Aabb& bounds, size_t box) const {
+    return bounds.overlaps(boxes_[box]) && !insideInner(bounds);
+  }
+
+ private:
+  std::vector<Aabb> boxes_;
+  std::optional<Aabb> inner_;
+};
+
 }  // namespace
+
+std::vector<bool> levelDraws(const Scene& scene, const VxgiSettings& settings, const VoxelizationPlan& plan) {
+  const uint32_t levels = uint32_t(plan.boxes.size());
+  std::vector<bool> draws(levels, false);
+  std::vector<bool> voxelized;
+  for (const Material& m : scene.materials()) voxelized.push_back(settings.voxelize.of(m));
+  const std::optional<Aabb> testCube = settings.testCubeBounds();
+  for (uint32_t level = 0; level < levels; ++level) {
+    if (plan.boxes[level].empty()) continue;
+    const LevelDrawFilter filter(plan, level);
+    // The test cube writes the voxels of the boxes it overlaps outside the inner box
+    // (test_cube.comp), as a surface with its bounds would.
+    for (size_t b = 0; testCube && b < filter.boxes().size() && !draws[level]; ++b)
+      draws[level] = filter.draws(*testCube, b);
+    for (const MeshInstance& instance : scene.instances()) {
+      if (draws[level]) break;
+      // An instance's bounds hold each of its primitives' (what the draw tests): when the
+      // instance is not drawn, none of its primitives is.
+      bool anyVoxelized = false;
+      for (const MeshPrimitive& p : scene.meshes()[instance.mesh].primitives)
+        anyVoxelized = anyVoxelized || (p.material < voxelized.size() && voxelized[p.material]);
+      if (!anyVoxelized) continue;
+      for (size_t b = 0; b < filter.boxes().size() && !draws[level]; ++b)
+        draws[level] = filter.draws(instance.worldBounds, b);
+    }
+  }
+  return draws;
+}
 
 void addConstantsPass(RenderGraph& graph, ClipMapHandles& handles, const ClipMapConstants& constants) {
   graph.addPass("VXGI.Constants", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
@@ -223,29 +290,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   for (uint32_t level = 0; level < format.stackLevels; ++level) {
     const std::vector<VoxelBox> boxes = plan.boxes[level];
     const VoxelBox inner = layout.innerBox(level);
-    std::vector<Aabb> worldBoxes;
-    // The surfaces to draw for a box: those within reach of it, since a surface writes up
-    // to plan.reach voxels beyond its bounds (a thick wall just outside a scrolled-in
-    // slab or a moved object's box still fills voxels inside it).
-    const float reach = float(plan.reach) * layout.levels()[level].voxelSize;
-    for (const VoxelBox& box : boxes) {
-      const Aabb w = layout.worldBox(level, box);
-      worldBoxes.push_back(Aabb{w.min - glm::vec3(reach), w.max + glm::vec3(reach)});
-    }
-    // The inner box is downsampled from the finer level and voxelize.frag skips its voxels:
-    // a surface whose every voxel lies there (its bounds, grown by the reach and one more
-    // voxel for the dilated fragments, inside the box) is not drawn at this level. On the
-    // Cornell box that is every surface at every level but the finest.
-    std::optional<Aabb> innerWorld;
-    if (level > 0) {
-      const Aabb w = layout.worldBox(level, inner);
-      const glm::vec3 margin(reach + layout.levels()[level].voxelSize);
-      innerWorld = Aabb{w.min + margin, w.max - margin};
-    }
-    auto insideInner = [innerWorld](const Aabb& b) {
-      return innerWorld && glm::all(glm::greaterThanEqual(b.min, innerWorld->min)) &&
-             glm::all(glm::lessThanEqual(b.max, innerWorld->max));
-    };
+    const LevelDrawFilter drawFilter(plan, level);
     const uint64_t voxels = plan.voxels(level);
     // Low-detail meshes: the deviation a level tolerates scales with its voxels.
     const float meshError = settings.voxelizationMeshError.get() * layout.levels()[level].voxelSize;
@@ -259,14 +304,19 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     // clear: the previous resolve zeroed every sum it read.
     graph.addPass(
         fmt::format("VXGI.ResetBricks.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-          if (!occupancy.valid()) {
-            occupancy = b.createBuffer("VXGI.BrickOccupancy", {uint64_t(bricksPerLevel) * sizeof(uint32_t)});
-            resolveArguments = b.createBuffer("VXGI.ResolveArguments", {sizeof(glm::uvec4)});
-            brickList = b.createBuffer("VXGI.BrickList", {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
-            downsampleArguments = b.createBuffer("VXGI.DownsampleArguments", {sizeof(glm::uvec4)});
-            downsampleBricks =
-                b.createBuffer("VXGI.DownsampleBricks", {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
-          }
+          // Each level's own (the graph may alias them): a level whose brick list and
+          // resolve are left out must not cull the next level's, which would read their
+          // last versions.
+          occupancy = b.createBuffer(fmt::format("VXGI.BrickOccupancy.L{}", level),
+                                     {uint64_t(bricksPerLevel) * sizeof(uint32_t)});
+          resolveArguments =
+              b.createBuffer(fmt::format("VXGI.ResolveArguments.L{}", level), {sizeof(glm::uvec4)});
+          brickList = b.createBuffer(fmt::format("VXGI.BrickList.L{}", level),
+                                     {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
+          downsampleArguments =
+              b.createBuffer(fmt::format("VXGI.DownsampleArguments.L{}", level), {sizeof(glm::uvec4)});
+          downsampleBricks = b.createBuffer(fmt::format("VXGI.DownsampleBricks.L{}", level),
+                                            {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
           occupancy = b.write(occupancy, Access::TransferDst);
           resolveArguments = b.write(resolveArguments, Access::TransferDst);
           brickList = b.write(brickList, Access::TransferDst);
@@ -344,12 +394,11 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                             glm::ivec4(inner.max, 0),
                             glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
                             glm::vec4(ambient, float(lightCount))};
-          const Aabb world = worldBoxes[i];
           triangles += ctx.drawScene(
               pipeline, common,
               [&](const gpu::GpuDraw& d) {
                 return d.material < voxelized.size() && voxelized[d.material] &&
-                       d.worldBounds.overlaps(world) && !insideInner(d.worldBounds);
+                       drawFilter.draws(d.worldBounds, i);
               },
               &push, sizeof(push), meshError);
         }
@@ -391,6 +440,14 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     // resolve runs over the list by indirect dispatch. Boxes are resolved voxel by voxel.
     const glm::ivec3 fullLevel(int32_t(format.mapSize));
     const bool wholeLevel = boxes.size() == 1 && boxes[0].max - boxes[0].min == fullLevel;
+    // Left out where nothing is drawn and nothing held needs clearing
+    // (ClipMapUpdate::decideResolves); the downsample into the inner box still runs.
+    const bool resolves = level >= plan.resolves.size() || plan.resolves[level];
+    auto decideResolve = [levelWork, resolves, decide] {
+      if (levelWork && !resolves)
+        return PassDecision::skip("whole level re-voxelized: nothing drawn, nothing held to clear");
+      return decide();
+    };
     graph.addPass(fmt::format("VXGI.BrickList.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       BufferHandle occupied = b.read(occupancy, Access::StorageRead);
       BufferHandle constants = b.read(handles.constants, Access::StorageRead);
@@ -399,7 +456,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         resolveArguments = b.write(resolveArguments, Access::StorageReadWrite);
         brickList = b.write(brickList, Access::StorageReadWrite);
       }
-      b.condition(decide);
+      b.condition(decideResolve);
       BufferHandle flags = handles.brickFlags, arguments = resolveArguments, list = brickList;
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(
@@ -428,7 +485,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       BufferHandle flags = b.read(handles.brickFlags, Access::StorageRead);
       handles.voxelStored = b.write(handles.voxelStored, Access::StorageReadWrite);
       writeAll(b, handles.clip);
-      b.condition(decide);
+      b.condition(decideResolve);
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
         const gpu::Pipeline& pipeline = ctx.pipelines().compute(

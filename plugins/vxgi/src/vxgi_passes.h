@@ -25,6 +25,11 @@ struct VoxelizationRecord {
   std::vector<uint64_t> triangles;  ///< per level, at its last voxelization
 };
 
+/// Per level of the plan: whether a voxelized surface (or the test cube) may be drawn into
+/// its boxes outside its inner box (VoxelizationPlan::draws; instance bounds, so true when
+/// any primitive might be).
+std::vector<bool> levelDraws(const Scene& scene, const VxgiSettings& settings, const VoxelizationPlan& plan);
+
 /// Voxelizes the plan's boxes level by level, downsamples into coarser levels and the
 /// mip pyramid. `committed` runs (at record time) once the work is recorded.
 void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,

@@ -140,6 +140,8 @@ class VxgiPlugin final : public Plugin {
       for (auto& boxes : plan.boxes) boxes.clear();
       plan.reason = "no material is used with VXGI voxelization and no test cube";
     }
+    plan.draws = levelDraws(frame.scene, settings_, plan);
+    update_.decideResolves(plan);
     auto committed = std::make_shared<VoxelizationPlan>(plan);
     // Until this frame's voxelization is recorded to its end, its sums may be left in the
     // scratch volume: the next frame would clear it first.

@@ -173,4 +173,44 @@ TEST(ClipMapUpdate, SubVoxelCameraMovesVoxelizeNothing) {
 }
 
 }  // namespace
+// A forced (whole) re-voxelization leaves out a level's resolve once the level draws
+// nothing and holds nothing from before: not on the first plan (contents unknown), not
+// right after something was drawn there, not when the level or its inner box moved since.
+TEST(ClipMapUpdate, AWholeLevelThatDrawsNothingAndHoldsNothingIsNotResolved) {
+  Scene scene;
+  const ClipMapFormat f{.mapSize = 32, .stackLevels = 3};
+  const ClipMapLayout layout = ClipMapLayout::place(f, 0.1f, {0, 0, 0});
+  ClipMapUpdate update;
+  auto forced = [&](const ClipMapLayout& l, std::vector<bool> draws) {
+    VoxelizationPlan p = update.plan(scene, l, 1u, 2, "forced");
+    p.draws = std::move(draws);
+    update.decideResolves(p);
+    update.commit(p);
+    return p.resolves;
+  };
+  using R = std::vector<bool>;
+  EXPECT_EQ(forced(layout, {true, false, false}), (R{true, true, true})) << "contents unknown";
+  EXPECT_EQ(forced(layout, {true, true, false}), (R{true, true, false}));
+  EXPECT_EQ(forced(layout, {true, false, false}), (R{true, true, false})) << "level 1 held what it drew";
+  EXPECT_EQ(forced(layout, {true, false, false}), (R{true, false, false}));
+  EXPECT_EQ(forced(layout, {false, false, false}), (R{true, false, false})) << "level 0 drew before";
+  EXPECT_EQ(forced(layout, {false, false, false}), (R{false, false, false}));
+  // The anchor moves: every level and inner box moved, so each resolves once more.
+  const ClipMapLayout moved = ClipMapLayout::place(f, 0.1f, {1.0f, 0, 0});
+  EXPECT_EQ(forced(moved, {false, false, false}), (R{true, true, true}));
+  EXPECT_EQ(forced(moved, {false, false, false}), (R{false, false, false}));
+  // Scrolled by a plan of boxes (not forced), then forced again: what the moved inner box
+  // left outside it is held until a whole resolve clears it.
+  VoxelizationPlan scrolled = update.plan(scene, layout, 1u);
+  scrolled.draws = {false, false, false};
+  update.decideResolves(scrolled);
+  update.commit(scrolled);
+  EXPECT_EQ(forced(layout, {false, false, false}), (R{true, true, true}));
+  // Unplanned levels do not resolve.
+  VoxelizationPlan still = update.plan(scene, layout, 1u);
+  still.draws = {false, false, false};
+  update.decideResolves(still);
+  EXPECT_EQ(still.resolves, (R{false, false, false}));
+}
+
 }  // namespace bounce::vxgi

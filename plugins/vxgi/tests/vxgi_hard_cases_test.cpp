@@ -500,5 +500,85 @@ TEST_F(VxgiHardCases, DownsampledContentLeftOutsideTheInnerBoxIsCleared) {
   EXPECT_LT(worst, 1e-3 * change);
 }
 
+// A level re-voxelized whole that draws nothing and holds nothing to clear leaves out its
+// brick list and resolve (ClipMapUpdate::decideResolves), but one that held something
+// must still clear it. Nothing in the open box is voxelized; an emitting test cube in
+// front of it to the right (8 cm voxels, 32³: level 0 spans 2.56 m around the box's
+// middle, level 1 5.12 m) lies in level 1 only, then moves into the box, inside level 1's
+// inner box, with every frame fully re-voxelized. The frame of the move must resolve
+// level 1 (clearing the cube it held), the next must leave it out, and the image must
+// equal a fresh start's with the cube in the box. With the held state ignored (left out
+// whenever nothing is drawn) the moved image read 0.438 W/m² off, against a move that
+// changed it by 3.08 (checked).
+TEST_F(VxgiHardCases, ALevelThatDrawsNothingLeavesOutItsResolveOnceItHoldsNothing) {
+  auto settings = [](const char* cube) {
+    return with(kSmall, {"Material.UsedWithVxgiVoxelization=0", "r.VXGI.VoxelSize=0.08",
+                         "r.VXGI.AnchorMode=Fixed", "r.VXGI.AnchorPosition=0 1 0",
+                         "r.VXGI.ForceFullVoxelization=1", std::string("r.VXGI.TestCube=") + cube});
+  };
+  auto frame = [&] { return render(24, 24, {"indirect-irradiance"}); };
+  start("content/tests/no_flagged_materials.gltf", settings("1.8 1 1.8 0.4"), "VXGI");
+  const ImageBuffer first = frame().images.at("indirect-irradiance");
+  const RenderedFrame drawn = frame();
+  EXPECT_TRUE(drawn.graph.executed("VXGI.Resolve.L1"))
+      << "the cube is drawn at level 1: " << drawn.graph.find("VXGI.Resolve.L1")->reason;
+  engine->console().execute("r.VXGI.TestCube 0 1 0 0.4");
+  const RenderedFrame clearing = frame();
+  EXPECT_TRUE(clearing.graph.executed("VXGI.Resolve.L1")) << "level 1 holds the cube: it must be cleared";
+  const RenderedFrame left = frame();
+  const CompiledPass* resolve = left.graph.find("VXGI.Resolve.L1");
+  ASSERT_NE(resolve, nullptr);
+  EXPECT_FALSE(resolve->executed);
+  EXPECT_NE(resolve->reason.find("nothing drawn"), std::string::npos) << resolve->reason;
+  EXPECT_FALSE(left.graph.executed("VXGI.BrickList.L1")) << left.graph.find("VXGI.BrickList.L1")->reason;
+  EXPECT_TRUE(left.graph.executed("VXGI.Resolve.L0"));
+  const ImageBuffer moved = left.images.at("indirect-irradiance");
+  finish();
+  start("content/tests/no_flagged_materials.gltf", settings("0 1 0 0.4"), "VXGI");
+  const ImageBuffer fresh = frame().images.at("indirect-irradiance");
+  finish();
+  const double worst = largestDifference(moved, fresh), change = largestDifference(first, fresh);
+  std::printf("cube moved into the box: %.6f W/m² from a fresh start (the move changed up to %.4f)\n", worst,
+              change);
+  EXPECT_GT(change, 0.005) << "the move must change the image for the comparison to mean anything";
+  EXPECT_LT(worst, 1e-3 * change);
+}
+
+// What the inner box leaves behind when it moves is held too. An emitting test cube inside
+// level 0 (so level 1 holds it downsampled); the anchor moves 1.5 m, which scrolls the
+// levels and moves level 1's inner box off the cube, leaving its downsampled content
+// outside the inner box (still right: the cube is there). Then the cube moves into the new
+// inner box and every frame is fully re-voxelized: level 1 draws nothing, but what it held
+// must be cleared, as a fresh start there shows. With the inner box's move not counted as
+// held (ClipMapUpdate::commit) the moved image read 2.71 W/m² off, against moves that
+// changed it by 2.45 (checked).
+TEST_F(VxgiHardCases, ALevelKeepsClearingWhatItsMovedInnerBoxLeftBehind) {
+  auto settings = [](const char* anchor, const char* cube, const char* force) {
+    return with(kSmall,
+                {"Material.UsedWithVxgiVoxelization=0", "r.VXGI.VoxelSize=0.08", "r.VXGI.AnchorMode=Fixed",
+                 std::string("r.VXGI.AnchorPosition=") + anchor, std::string("r.VXGI.TestCube=") + cube,
+                 std::string("r.VXGI.ForceFullVoxelization=") + force});
+  };
+  auto irradiance = [&] { return render(24, 24, {"indirect-irradiance"}).images.at("indirect-irradiance"); };
+  start("content/tests/no_flagged_materials.gltf", settings("0 1 0", "0.6 1 0.6 0.3", "0"), "VXGI");
+  const ImageBuffer first = irradiance();
+  irradiance();
+  engine->console().execute("r.VXGI.AnchorPosition -1.5 1 0");
+  irradiance();  // scrolled: level 1's inner box moved off the cube
+  engine->console().execute("r.VXGI.TestCube -1.5 1 0 0.3");
+  engine->console().execute("r.VXGI.ForceFullVoxelization 1");
+  irradiance();
+  const ImageBuffer moved = irradiance();
+  finish();
+  start("content/tests/no_flagged_materials.gltf", settings("-1.5 1 0", "-1.5 1 0 0.3", "1"), "VXGI");
+  const ImageBuffer fresh = irradiance();
+  finish();
+  const double worst = largestDifference(moved, fresh), change = largestDifference(first, fresh);
+  std::printf("inner box moved, then the cube: %.6f W/m² from a fresh start (the moves changed up to %.4f)\n",
+              worst, change);
+  EXPECT_GT(change, 0.005) << "the moves must change the image for the comparison to mean anything";
+  EXPECT_LT(worst, 1e-3 * change);
+}
+
 }  // namespace
 }  // namespace bounce::test
