@@ -79,5 +79,44 @@ TEST_F(Executor, PersistentAllocationsAreFreedWhenTheExecutorGoesFirst) {
   EXPECT_EQ(texture->state().layout, VK_IMAGE_LAYOUT_UNDEFINED);
 }
 
+// Which passes use a transient buffer, and so its usage, can change from frame to frame as
+// passes are culled; the executor's pool must reuse the buffer it has rather than make one
+// for each usage. A 64 KiB buffer cleared by one pass and, on even frames, read as indirect
+// arguments and a storage buffer by a second: device memory stays at its first frame's.
+TEST_F(Executor, ATransientBufferWhoseUsageShrinksReusesThePooledOne) {
+  start("content/tests/emissive_quad.gltf");
+  bool secondUse = true;
+  engine->hooks().add(
+      {.name = "Test.Pool",
+       .point = ExtensionPoint::FrameBegin,
+       .setup =
+           [&](RenderGraph& g, const FrameContext&) {
+             BufferHandle buf;
+             g.addPass("Test.Clear", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+               buf = b.write(b.createBuffer("test.pooled", {65536}), Access::TransferDst);
+               b.sideEffect("test");
+               return [=](PassContext& ctx) {
+                 vkCmdFillBuffer(ctx.cmd(), ctx.buffer(buf).handle(), 0, VK_WHOLE_SIZE, 0u);
+               };
+             });
+             g.addPass("Test.Read", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+               b.read(buf, Access::Indirect);
+               b.read(buf, Access::StorageRead);
+               b.sideEffect("test");
+               b.condition([&] { return secondUse ? PassDecision::run("even") : PassDecision::skip("odd"); });
+               return {};
+             });
+           }},
+      kEngineOwner, "test", "");
+  render(8, 8, {});
+  const uint64_t first = device->allocatedBytes();
+  for (int frame = 0; frame < 6; ++frame) {
+    secondUse = frame % 2 == 1;
+    render(8, 8, {});
+    EXPECT_EQ(device->allocatedBytes(), first) << "frame " << frame;
+  }
+  engine->hooks().removeOwnedBy(kEngineOwner);
+}
+
 }  // namespace
 }  // namespace bounce::test

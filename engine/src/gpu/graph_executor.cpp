@@ -129,9 +129,12 @@ struct GraphExecutor::State {
     return images.back().image.get();
   }
 
+  /// A pooled buffer of the same description whose usage includes `usage`: which passes
+  /// use a transient buffer (and so its usage) may change from frame to frame as passes are
+  /// culled, and an exact match would then create another buffer for each variant.
   Buffer* acquireBuffer(const BufferDesc& desc, VkBufferUsageFlags usage, const std::string& name) {
     for (PooledBuffer& p : buffers)
-      if (p.lastFrame != frame && p.usage == usage && p.desc == desc) {
+      if (p.lastFrame != frame && (p.usage & usage) == usage && p.desc == desc) {
         p.lastFrame = frame;
         return p.buffer.get();
       }

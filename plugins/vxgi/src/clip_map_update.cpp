@@ -64,6 +64,10 @@ bool VoxelizationPlan::empty() const {
   return true;
 }
 
+bool VoxelizationPlan::wholeLevel(uint32_t level) const {
+  return level < boxes.size() && boxes[level].size() == 1 && boxes[level][0] == layout.levelBox(level);
+}
+
 uint64_t VoxelizationPlan::voxels(uint32_t level) const {
   uint64_t n = 0;
   for (const VoxelBox& b : boxes.at(level)) n += b.volume();
@@ -136,10 +140,6 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
 
 namespace {
 
-bool wholeLevel(const VoxelizationPlan& plan, uint32_t level) {
-  return plan.boxes[level].size() == 1 && plan.boxes[level][0] == plan.layout.levelBox(level);
-}
-
 bool drawsAt(const VoxelizationPlan& plan, uint32_t level) {
   return level >= plan.draws.size() || plan.draws[level];
 }
@@ -159,7 +159,7 @@ void ClipMapUpdate::decideResolves(VoxelizationPlan& plan) const {
                            committed_->levelBox(l) == plan.layout.levelBox(l) &&
                            committed_->innerBox(l) == plan.layout.innerBox(l);
     const bool held = l >= holds_.size() || holds_[l];
-    if (wholeLevel(plan, l) && unchanged && !held && !drawsAt(plan, l)) plan.resolves[l] = false;
+    if (plan.wholeLevel(l) && unchanged && !held && !drawsAt(plan, l)) plan.resolves[l] = false;
   }
 }
 
@@ -172,9 +172,9 @@ void ClipMapUpdate::commit(const VoxelizationPlan& plan) {
                        !(committed_->levelBox(l) == plan.layout.levelBox(l)) ||
                        !(committed_->innerBox(l) == plan.layout.innerBox(l));
     const bool resolved = l < plan.resolves.size() ? plan.resolves[l] : !plan.boxes[l].empty();
-    if (wholeLevel(plan, l) && resolved)
+    if (plan.wholeLevel(l) && resolved)
       holds[l] = drawsAt(plan, l);  // everything outside the inner box is this frame's
-    else if (wholeLevel(plan, l))
+    else if (plan.wholeLevel(l))
       holds[l] = before;  // left out: nothing drawn, nothing held
     else                  // boxes, or nothing: what was there stays, with what was drawn and moved
       holds[l] = before || moved || (!plan.boxes[l].empty() && drawsAt(plan, l));

@@ -33,6 +33,8 @@ struct VoxelizationPlan {
   /// a level re-voxelized whole that draws nothing and holds nothing to clear need not.
   std::vector<bool> resolves;
   bool empty() const;
+  /// The level is voxelized whole (one box, the level's).
+  bool wholeLevel(uint32_t level) const;
   uint64_t voxels() const;
   uint64_t voxels(uint32_t level) const;
 };

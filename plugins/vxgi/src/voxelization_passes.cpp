@@ -304,9 +304,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     // clear: the previous resolve zeroed every sum it read.
     graph.addPass(
         fmt::format("VXGI.ResetBricks.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-          // Each level's own (the graph may alias them): a level whose brick list and
-          // resolve are left out must not cull the next level's, which would read their
-          // last versions.
+          // Each level's own: a level whose brick list and resolve are left out must not
+          // cull the next level's passes, which would otherwise write after them (the
+          // executor's pool reuses these buffers whichever passes used them).
           occupancy = b.createBuffer(fmt::format("VXGI.BrickOccupancy.L{}", level),
                                      {uint64_t(bricksPerLevel) * sizeof(uint32_t)});
           resolveArguments =
@@ -438,8 +438,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     // A level resolved whole (a full re-voxelization) need only write the bricks that
     // received sums or may hold something from before: brick_list.comp lists them, and the
     // resolve runs over the list by indirect dispatch. Boxes are resolved voxel by voxel.
-    const glm::ivec3 fullLevel(int32_t(format.mapSize));
-    const bool wholeLevel = boxes.size() == 1 && boxes[0].max - boxes[0].min == fullLevel;
+    const bool wholeLevel = plan.wholeLevel(level);
     // Left out where nothing is drawn and nothing held needs clearing
     // (ClipMapUpdate::decideResolves); the downsample into the inner box still runs.
     const bool resolves = level >= plan.resolves.size() || plan.resolves[level];
