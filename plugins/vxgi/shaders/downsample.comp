@@ -11,8 +11,8 @@
 //   VXGI_DOWNSAMPLE_MODE 2: pyramid mip m → mip m+1
 //   VXGI_DOWNSAMPLE_MODE 3: the pyramid's tail, the mips of one 4³ block or less, each
 //                           from the one before, in one workgroup (a dispatch costs
-//                           lavapipe ~60 µs however little it does, and these are a few
-//                           dozen voxels each)
+//                           lavapipe ~0.2 ms on a 2-core machine however little it does,
+//                           and these are a few dozen voxels each)
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"

@@ -365,10 +365,11 @@ void vxgiLevelRoom(vec3 p, int level, out vec3 below, out vec3 above) {
   below = p - (origin + 0.5) * v;
   above = (origin + (float(clipMap.mapSize) - 0.5)) * v - p;
 }
-VxgiPlace vxgiPlaceOf(vec3 p, float lod, int from) {
+// The place of sample p, its finest level searched from level `from` (used and lod are
+// the caller's to set once it knows the footprint).
+VxgiPlace vxgiPlaceOf(vec3 p, int from) {
   VxgiPlace place;
   place.p = p;
-  place.lod = lod;
   place.finest = vxgiFinestLevelAt(p, from);
   vxgiLevelRoom(p, max(place.finest, 0), place.belowFinest, place.aboveFinest);
   vxgiLevelRoom(p, clipMap.levelCount - 1, place.belowLast, place.aboveLast);
@@ -445,7 +446,7 @@ VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, VxgiConeStart cone, out
   float lod = log2(used * clipMap.reciprocals.w);
   int from = min(int(floor(lod)), clipMap.levelCount - 1);
   // One level finer than the footprint's: the slots' footprints are down to half of it.
-  VxgiPlace place = vxgiPlaceOf(p, lod, max(from - 1, 0));
+  VxgiPlace place = vxgiPlaceOf(p, max(from - 1, 0));
   valid = place.finest >= 0;
   if (!valid) return s;
   VxgiLevels c = vxgiLevelsAt(lod, used, max(place.finest, from));
