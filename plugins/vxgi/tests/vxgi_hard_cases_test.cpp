@@ -38,6 +38,18 @@ double largestDifference(const ImageBuffer& a, const ImageBuffer& b) {
   return worst;
 }
 
+// An image reached by changes (`changed`) must equal a fresh start's in the same state: to
+// a rounding-level difference (float atomics add in another order) of what the changes
+// changed, measured from the image before them (`before`).
+void expectMatchesAFreshStart(const ImageBuffer& changed, const ImageBuffer& fresh, const ImageBuffer& before,
+                              const char* what) {
+  const double worst = largestDifference(changed, fresh), change = largestDifference(before, fresh);
+  std::printf("%s: %.6f W/m² from a fresh start (the change moved it up to %.4f)\n", what, worst, change);
+  EXPECT_GT(change, 0.005) << what
+                           << ": the change must change the image for the comparison to mean anything";
+  EXPECT_LT(worst, 1e-3 * change) << what;
+}
+
 TEST_F(VxgiHardCases, TestCubeIsOpaqueThenQuarterThenSixteenthAtCoarserLevels) {
   // The seed's example (seed 000): a cube the size of one voxel is fully opaque at its
   // level, 25% at the next and 6.25% at the one after, while its radiance stays 1.
@@ -460,10 +472,7 @@ TEST_F(VxgiHardCases, PyramidForgetsWhereAnEmitterLeft) {
   start("content/tests/lit_floor_and_wall.gltf", settings("-1.5 2.6 2 0.4"), "VXGI");
   const ImageBuffer fresh = irradiance();
   finish();
-  const double worst = largestDifference(moved, fresh), change = largestDifference(first, fresh);
-  std::printf("test cube moved: %.6f W/m² from a fresh start (the move changed up to %.4f)\n", worst, change);
-  EXPECT_GT(change, 0.005) << "the move must change the image for the comparison to mean anything";
-  EXPECT_LT(worst, 1e-3 * change);
+  expectMatchesAFreshStart(moved, fresh, first, "test cube moved");
 }
 
 // A coarser level's inner box holds what downsampling stored there (VXGI_BRICK_DOWNSAMPLED),
@@ -493,11 +502,7 @@ TEST_F(VxgiHardCases, DownsampledContentLeftOutsideTheInnerBoxIsCleared) {
   start("content/tests/lit_floor_and_wall.gltf", settings("0 1.5 1.3", "0 1.5 1.3 0.4"), "VXGI");
   const ImageBuffer fresh = irradiance();
   finish();
-  const double worst = largestDifference(moved, fresh), change = largestDifference(first, fresh);
-  std::printf("anchor and cube moved: %.6f W/m² from a fresh start (the move changed up to %.4f)\n", worst,
-              change);
-  EXPECT_GT(change, 0.005) << "the move must change the image for the comparison to mean anything";
-  EXPECT_LT(worst, 1e-3 * change);
+  expectMatchesAFreshStart(moved, fresh, first, "anchor and cube moved");
 }
 
 // A level re-voxelized whole that draws nothing and holds nothing to clear leaves out its
@@ -537,11 +542,7 @@ TEST_F(VxgiHardCases, ALevelThatDrawsNothingLeavesOutItsResolveOnceItHoldsNothin
   start("content/tests/no_flagged_materials.gltf", settings("0 1 0 0.4"), "VXGI");
   const ImageBuffer fresh = frame().images.at("indirect-irradiance");
   finish();
-  const double worst = largestDifference(moved, fresh), change = largestDifference(first, fresh);
-  std::printf("cube moved into the box: %.6f W/m² from a fresh start (the move changed up to %.4f)\n", worst,
-              change);
-  EXPECT_GT(change, 0.005) << "the move must change the image for the comparison to mean anything";
-  EXPECT_LT(worst, 1e-3 * change);
+  expectMatchesAFreshStart(moved, fresh, first, "cube moved into the box");
 }
 
 // What the inner box leaves behind when it moves is held too. An emitting test cube inside
@@ -573,11 +574,7 @@ TEST_F(VxgiHardCases, ALevelKeepsClearingWhatItsMovedInnerBoxLeftBehind) {
   start("content/tests/no_flagged_materials.gltf", settings("-1.5 1 0", "-1.5 1 0 0.3", "1"), "VXGI");
   const ImageBuffer fresh = irradiance();
   finish();
-  const double worst = largestDifference(moved, fresh), change = largestDifference(first, fresh);
-  std::printf("inner box moved, then the cube: %.6f W/m² from a fresh start (the moves changed up to %.4f)\n",
-              worst, change);
-  EXPECT_GT(change, 0.005) << "the moves must change the image for the comparison to mean anything";
-  EXPECT_LT(worst, 1e-3 * change);
+  expectMatchesAFreshStart(moved, fresh, first, "inner box moved, then the cube");
 }
 
 }  // namespace
