@@ -11,7 +11,7 @@
 //   VXGI_DOWNSAMPLE_MODE 2: pyramid mip m → mip m+1
 //   VXGI_DOWNSAMPLE_MODE 3: the pyramid's tail, the mips of one 4³ block or less, each
 //                           from the one before, in one workgroup (a dispatch costs
-//                           lavapipe ~0.2 ms on a 2-core machine however little it does,
+//                           lavapipe ~0.15 ms on a 2-core machine however little it does,
 //                           and these are a few dozen voxels each)
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
