@@ -65,9 +65,11 @@ const std::vector<std::string> kFixedColumns = {"technique",
                                                 "radiance_rel_rmse",
                                                 "radiance_mean_rel_error",
                                                 "radiance_max_abs",
+                                                "radiance_mean_ratio",
                                                 "irradiance_rel_rmse",
                                                 "irradiance_mean_rel_error",
                                                 "irradiance_max_abs",
+                                                "irradiance_mean_ratio",
                                                 "path_tracer_equivalent_ms",
                                                 "on_pareto_front",
                                                 "image",
@@ -98,7 +100,8 @@ Measurement vxgiDefault() {
   m.transientBytes = 4096;
   m.radiance.meanRelativeError = 0.05;
   m.radiance.maxAbsoluteError = 3.5;
-  m.irradiance = {0, 0.07, 0.08, 1.5, 0, 0};
+  m.irradiance = {
+      .rmse = 0, .relativeRmse = 0.07, .meanRelativeError = 0.08, .maxAbsoluteError = 1.5, .meanRatio = 1.25};
   m.pathTracerEquivalentMs = 246;
   m.image = "images/vxgi_default.png";
   m.heatMap = "heat/vxgi_default.png";
@@ -140,6 +143,7 @@ TEST(ReportCsv, RowHoldsTheMeasurementsValues) {
   EXPECT_EQ(column(rows, 1, "irradiance_rel_rmse"), "0.07");
   EXPECT_EQ(column(rows, 1, "irradiance_mean_rel_error"), "0.08");
   EXPECT_EQ(column(rows, 1, "irradiance_max_abs"), "1.5");
+  EXPECT_EQ(column(rows, 1, "irradiance_mean_ratio"), "1.25");
   EXPECT_EQ(column(rows, 1, "path_tracer_equivalent_ms"), "246");
   EXPECT_EQ(column(rows, 1, "on_pareto_front"), "1");
   EXPECT_EQ(column(rows, 1, "image"), "images/vxgi_default.png");

@@ -25,6 +25,7 @@ void expectAllStatsNaN(const ImageErrorStats& stats) {
   EXPECT_TRUE(std::isnan(stats.meanRelativeError));
   EXPECT_TRUE(std::isnan(stats.maxAbsoluteError));
   EXPECT_TRUE(std::isnan(stats.meanAbsoluteError));
+  EXPECT_TRUE(std::isnan(stats.meanRatio));
 }
 
 // ---- ImageBuffer --------------------------------------------------------------------
@@ -60,6 +61,7 @@ TEST(CompareImages, IdenticalImagesHaveZeroError) {
   EXPECT_EQ(stats.meanRelativeError, 0.0);
   EXPECT_EQ(stats.maxAbsoluteError, 0.0);
   EXPECT_EQ(stats.meanAbsoluteError, 0.0);
+  EXPECT_EQ(stats.meanRatio, 1.0);
   EXPECT_EQ(stats.nonFinite, 0u);
 }
 
@@ -74,7 +76,19 @@ TEST(CompareImages, MatchesHandComputedRmseMaxAndMeans) {
   EXPECT_DOUBLE_EQ(stats.meanAbsoluteError, 4.0 / 6.0);
   EXPECT_DOUBLE_EQ(stats.relativeRmse, std::sqrt(10.0 / 6.0) / (7.0 / 6.0));  // reference mean 7/6
   EXPECT_DOUBLE_EQ(stats.meanRelativeError, (1.0 / (2.0 + epsilon) + 3.0 / (1.0 + epsilon)) / 6.0);
+  EXPECT_DOUBLE_EQ(stats.meanRatio, 9.0 / 7.0);  // sums 9 and 7
   EXPECT_EQ(stats.nonFinite, 0u);
+}
+
+TEST(CompareImages, MeanRatioShowsABiasThatErrorsOfEitherSignHide) {
+  // Twice as bright everywhere, and half as bright: the same relative RMSE order of
+  // magnitude, but ratios 2 and 0.5. A black reference has no ratio.
+  const ImageBuffer reference = rgbImage(2, 1, {1, 2, 3, 4, 5, 6});
+  const ImageBuffer brighter = rgbImage(2, 1, {2, 4, 6, 8, 10, 12});
+  const ImageBuffer darker = rgbImage(2, 1, {0.5f, 1, 1.5f, 2, 2.5f, 3});
+  EXPECT_DOUBLE_EQ(compareImages(brighter, reference).meanRatio, 2.0);
+  EXPECT_DOUBLE_EQ(compareImages(darker, reference).meanRatio, 0.5);
+  EXPECT_TRUE(std::isnan(compareImages(brighter, ImageBuffer(2, 1, 3, 0.0f)).meanRatio));
 }
 
 TEST(CompareImages, EpsilonBoundsRelativeErrorAgainstBlack) {
@@ -83,6 +97,7 @@ TEST(CompareImages, EpsilonBoundsRelativeErrorAgainstBlack) {
   const ImageErrorStats stats = compareImages(image, reference, 0.01);
   EXPECT_NEAR(stats.meanRelativeError, (0.02 / 0.01) / 3.0, 1e-7);  // 0.02f is not exact in float
   EXPECT_EQ(stats.relativeRmse, 0.0) << "a black reference has no mean to be relative to";
+  EXPECT_TRUE(std::isnan(stats.meanRatio)) << "nor a ratio";
   EXPECT_NEAR(stats.rmse, std::sqrt(0.02 * 0.02 / 3.0), 1e-9);
   // A larger epsilon shrinks it: the denominator is |b| + epsilon.
   EXPECT_NEAR(compareImages(image, reference, 0.1).meanRelativeError, (0.02 / 0.1) / 3.0, 1e-7);
@@ -134,6 +149,7 @@ TEST(CompareImages, ExcludesAndCountsNonFinitePixels) {
   EXPECT_DOUBLE_EQ(stats.meanAbsoluteError, 2.0 / 12.0);
   EXPECT_DOUBLE_EQ(stats.meanRelativeError, 2.0 / 12.0);
   EXPECT_DOUBLE_EQ(stats.relativeRmse, std::sqrt(4.0 / 12.0));
+  EXPECT_DOUBLE_EQ(stats.meanRatio, 14.0 / 12.0);  // the bad pixels left out of both sums
 }
 
 TEST(CompareImages, NonFiniteReferencePixelsAreExcludedButNotCounted) {

@@ -11,14 +11,14 @@ ImageErrorStats compareImages(const ImageBuffer& image, const ImageBuffer& refer
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   ImageErrorStats stats;
   stats.rmse = stats.relativeRmse = stats.meanRelativeError = kNaN;
-  stats.maxAbsoluteError = stats.meanAbsoluteError = kNaN;
+  stats.maxAbsoluteError = stats.meanAbsoluteError = stats.meanRatio = kNaN;
   if (!image::comparable(image, reference)) return stats;
 
   // A pixel with a NaN/Inf is counted and left out, so one bad sample does not turn every
   // statistic into NaN and hide how close the rest of the image is. A non-finite
   // reference pixel is left out too (it says nothing about `image`) but not counted.
   const image::ComparedPixels compared(image, reference);
-  double squared = 0, absolute = 0, relative = 0, referenceSum = 0, maxAbsolute = 0;
+  double squared = 0, absolute = 0, relative = 0, sum = 0, referenceSum = 0, maxAbsolute = 0;
   size_t values = 0;
   for (uint32_t y = 0; y < image.height; ++y) {
     for (uint32_t x = 0; x < image.width; ++x) {
@@ -34,6 +34,7 @@ ImageErrorStats compareImages(const ImageBuffer& image, const ImageBuffer& refer
         squared += difference * difference;
         absolute += std::abs(difference);
         relative += image::relativeError(a[c], b[c], epsilon);
+        sum += a[c];
         referenceSum += b[c];
         maxAbsolute = std::max(maxAbsolute, std::abs(difference));
         ++values;
@@ -51,6 +52,7 @@ ImageErrorStats compareImages(const ImageBuffer& image, const ImageBuffer& refer
   stats.meanRelativeError = relative / n;
   stats.maxAbsoluteError = maxAbsolute;
   stats.meanAbsoluteError = absolute / n;
+  stats.meanRatio = referenceSum == 0.0 ? kNaN : sum / referenceSum;
   return stats;
 }
 

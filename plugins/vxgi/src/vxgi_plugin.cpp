@@ -53,7 +53,7 @@ class VxgiPlugin final : public Plugin {
     declareDebugViews(ctx);
     // The knobs the seed names as the quality/performance trade-offs.
     ctx.addQualityKnob({.cvar = "r.VXGI.MapSize", .values = {"64", "128"}, .label = "map"});
-    ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseCones", .values = {"4", "8", "16"}, .label = "cones"});
+    ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseCones", .values = {"4", "8", "16", "32"}, .label = "cones"});
     ctx.addQualityKnob({.cvar = "r.VXGI.TracingStep", .values = {"0.25", "0.5", "1"}, .label = "step"});
     ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseSparsity", .values = {"1", "2", "4"}, .label = "sparse"});
     ctx.addConsoleCommand({.name = "vxgi.Status",

@@ -59,6 +59,9 @@ struct ImageErrorStats {
   double meanRelativeError = 0;  ///< mean of |a−b| / (|b| + epsilon)
   double maxAbsoluteError = 0;
   double meanAbsoluteError = 0;
+  /// Σ image / Σ reference over the compared values: the bias an RMSE hides (1.2: 20% too
+  /// bright on average). NaN when the reference sums to 0.
+  double meanRatio = 0;
   size_t nonFinite = 0;  ///< pixels of `image` with a NaN/Inf in a compared channel
 };
 /// `epsilon` keeps relative errors finite where the reference is black (units of the
