@@ -231,11 +231,26 @@ VxgiLevels vxgiLevelsAt(float lod, float used, int finest) {
   c.coarser = min(c.level + 1, top);
   return c;
 }
+// A footprint of diameter d as vxgiLevelsAt takes it: `used` (never below the finest voxel:
+// finer detail is not stored), its lod, and the clipped level whose voxels match it (the
+// coarsest where it is wider), from which the search for the finest level holding a sample
+// starts.
+struct VxgiFootprint {
+  float used;
+  float lod;
+  int level;
+};
+VxgiFootprint vxgiFootprint(float d) {
+  VxgiFootprint f;
+  f.used = max(d, clipMap.voxelSize0);
+  f.lod = log2(f.used * clipMap.reciprocals.w);
+  f.level = min(int(floor(f.lod)), clipMap.levelCount - 1);
+  return f;
+}
 bool vxgiChooseLevels(vec3 p, float d, out VxgiLevels c) {
-  float used = max(d, clipMap.voxelSize0);
-  float lod = log2(used * clipMap.reciprocals.w);
-  int finest = vxgiFinestLevelAt(p, min(int(floor(lod)), clipMap.levelCount - 1));
-  c = vxgiLevelsAt(lod, used, max(finest, 0));
+  VxgiFootprint f = vxgiFootprint(d);
+  int finest = vxgiFinestLevelAt(p, f.level);
+  c = vxgiLevelsAt(f.lod, f.used, max(finest, 0));
   return finest >= 0;
 }
 
@@ -442,17 +457,17 @@ VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, VxgiConeStart cone, out
   s.density = 0.0;
   // The footprint the caller steps by, widened where p lies outside the levels fine
   // enough for it.
-  float used = max(diameter, clipMap.voxelSize0);
-  float lod = log2(used * clipMap.reciprocals.w);
-  int from = min(int(floor(lod)), clipMap.levelCount - 1);
+  VxgiFootprint f = vxgiFootprint(diameter);
   // One level finer than the footprint's: the slots' footprints are down to half of it.
-  VxgiPlace place = vxgiPlaceOf(p, max(from - 1, 0));
+  VxgiPlace place = vxgiPlaceOf(p, max(f.level - 1, 0));
   valid = place.finest >= 0;
   if (!valid) return s;
-  VxgiLevels c = vxgiLevelsAt(lod, used, max(place.finest, from));
+  VxgiLevels c = vxgiLevelsAt(f.lod, f.used, max(place.finest, f.level));
   diameter = c.used;
   place.used = c.used;
-  place.lod = log2(c.used * clipMap.reciprocals.w);
+  // log2(c.used / finest voxel): the footprint's lod, or the level it was widened to (whose
+  // voxel is c.used, and which exceeds the lod's floor only then).
+  place.lod = max(f.lod, float(c.level));
   vec3 qx, qy, qz;
   float kx, ky, kz, ux, uy, uz;
   vxgiClipToApex(p, diameter, cone, 0, qx, kx);
