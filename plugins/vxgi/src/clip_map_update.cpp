@@ -146,6 +146,12 @@ bool drawsAt(const VoxelizationPlan& plan, uint32_t level) {
 
 }  // namespace
 
+bool ClipMapUpdate::levelMoved(uint32_t level, const ClipMapLayout& layout) const {
+  return !committed_ || !(committed_->format() == layout.format()) || level >= committed_->levels().size() ||
+         !(committed_->levelBox(level) == layout.levelBox(level)) ||
+         !(committed_->innerBox(level) == layout.innerBox(level));
+}
+
 void ClipMapUpdate::decideResolves(VoxelizationPlan& plan) const {
   const uint32_t levels = uint32_t(plan.boxes.size());
   plan.resolves.assign(levels, true);
@@ -154,12 +160,9 @@ void ClipMapUpdate::decideResolves(VoxelizationPlan& plan) const {
       plan.resolves[l] = false;  // nothing voxelized at this level
       continue;
     }
-    const bool unchanged = committed_ && committed_->format() == plan.layout.format() &&
-                           l < committed_->levels().size() &&
-                           committed_->levelBox(l) == plan.layout.levelBox(l) &&
-                           committed_->innerBox(l) == plan.layout.innerBox(l);
     const bool held = l >= holds_.size() || holds_[l];
-    if (plan.wholeLevel(l) && unchanged && !held && !drawsAt(plan, l)) plan.resolves[l] = false;
+    if (plan.wholeLevel(l) && !levelMoved(l, plan.layout) && !held && !drawsAt(plan, l))
+      plan.resolves[l] = false;
   }
 }
 
@@ -168,9 +171,7 @@ void ClipMapUpdate::commit(const VoxelizationPlan& plan) {
   std::vector<bool> holds(levels, true);
   for (uint32_t l = 0; l < levels; ++l) {
     const bool before = committed_ && l < holds_.size() ? holds_[l] : true;
-    const bool moved = !committed_ || l >= committed_->levels().size() ||
-                       !(committed_->levelBox(l) == plan.layout.levelBox(l)) ||
-                       !(committed_->innerBox(l) == plan.layout.innerBox(l));
+    const bool moved = levelMoved(l, plan.layout);
     const bool resolved = l < plan.resolves.size() ? plan.resolves[l] : !plan.boxes[l].empty();
     if (plan.wholeLevel(l) && resolved)
       holds[l] = drawsAt(plan, l);  // everything outside the inner box is this frame's

@@ -73,6 +73,10 @@ class ClipMapUpdate {
   }
 
  private:
+  /// Whether level `level` or its inner box is placed otherwise in `layout` than in what
+  /// the textures hold (true when that is unknown).
+  bool levelMoved(uint32_t level, const ClipMapLayout& layout) const;
+
   std::optional<ClipMapLayout> committed_;
   /// Per level: whether its voxels outside its inner box may hold anything its next whole
   /// resolve would have to clear (absent: unknown, so yes).

@@ -37,8 +37,10 @@ gpu::ShaderSource shader(const std::filesystem::path& shaders, const char* file,
 // at least 8: the Cornell box's fully re-voxelized resolve went from 8.0–9.5 to 5.5–6.8 ms
 // at 64³ and 36–43 to 25–29 ms at 128³, the downsample from 18–21 to 15–16 ms at 128³
 // (4 bricks: 6.2–7.7 ms at 64³, 16: 6.2–6.8, 32: 6.2–7.4). A GPU wants the groups.
-uint32_t bricksPerListGroup(uint32_t mostListed, bool cpuDevice) {
-  uint32_t k = cpuDevice ? 8 : 1;
+// `least`: the fewest a group takes (1 on a GPU; on a CPU device 8 for the brick lists, 4
+// for the mips, whose lists are short).
+uint32_t bricksPerListGroup(uint32_t mostListed, uint32_t least) {
+  uint32_t k = least;
   while ((mostListed + k - 1) / k > 65535u) k *= 2;
   return k;
 }
@@ -286,7 +288,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
   const uint32_t bricksPerLevel = bricksPerAxis * bricksPerAxis * bricksPerAxis;
   const bool cpuDevice = frame.device && frame.device->cpu;
-  const uint32_t bricksPerGroup = bricksPerListGroup(bricksPerLevel, cpuDevice);
+  const uint32_t bricksPerGroup = bricksPerListGroup(bricksPerLevel, cpuDevice ? 8u : 1u);
   for (uint32_t level = 0; level < format.stackLevels; ++level) {
     const std::vector<VoxelBox> boxes = plan.boxes[level];
     const VoxelBox inner = layout.innerBox(level);
@@ -581,7 +583,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   // re-voxelized every frame (three runs each, ms): 64³ 1.37–1.51 with 8 blocks a group,
   // 1.03–1.06 with 2, 1.00–1.30 with 4, 1.18–1.25 with 1; 128³ 1.96–2.01, 1.40–1.56,
   // 1.26–1.32 and 1.71–1.82.
-  const uint32_t blocksPerGroup = cpuDevice ? 4u : 1u;
+  const uint32_t blocksPerGroup = bricksPerListGroup(flagOffsets.back(), cpuDevice ? 4u : 1u);
   // The pyramid's tail: the mips of one block (4³ voxels or fewer), computed in one
   // workgroup (downsample.comp, mode 3); never mip 0, which reads the coarsest level.
   uint32_t tail = 1;

@@ -172,7 +172,6 @@ TEST(ClipMapUpdate, SubVoxelCameraMovesVoxelizeNothing) {
   EXPECT_LT(moved.voxels(), 32ull * 32 * 32 / 4);
 }
 
-}  // namespace
 // A forced (whole) re-voxelization leaves out a level's resolve once the level draws
 // nothing and holds nothing from before: not on the first plan (contents unknown), not
 // right after something was drawn there, not when the level or its inner box moved since.
@@ -206,11 +205,23 @@ TEST(ClipMapUpdate, AWholeLevelThatDrawsNothingAndHoldsNothingIsNotResolved) {
   update.decideResolves(scrolled);
   update.commit(scrolled);
   EXPECT_EQ(forced(layout, {false, false, false}), (R{true, true, true}));
+  // The anchor moves by one finest voxel pair: level 0 scrolls, and with it level 1's inner
+  // box, while level 1 itself stays. What the inner box left is held: level 1 resolves.
+  ASSERT_FALSE(forced(layout, {false, false, false})[1]) << "level 1 holds nothing now";
+  const ClipMapLayout nudged = ClipMapLayout::place(f, 0.1f, {0.2f, 0, 0});
+  ASSERT_EQ(nudged.levelBox(1), layout.levelBox(1));
+  ASSERT_NE(nudged.innerBox(1), layout.innerBox(1));
+  VoxelizationPlan nudge = update.plan(scene, nudged, 1u);
+  nudge.draws = {false, false, false};
+  update.decideResolves(nudge);
+  update.commit(nudge);
+  EXPECT_TRUE(forced(nudged, {false, false, false})[1]) << "level 1's inner box moved off what it held";
   // Unplanned levels do not resolve.
-  VoxelizationPlan still = update.plan(scene, layout, 1u);
+  VoxelizationPlan still = update.plan(scene, nudged, 1u);
   still.draws = {false, false, false};
   update.decideResolves(still);
   EXPECT_EQ(still.resolves, (R{false, false, false}));
 }
 
+}  // namespace
 }  // namespace bounce::vxgi
