@@ -93,7 +93,7 @@ ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
 }
 
 ClipMapHandles ClipMapTextures::readSampled(PassBuilder& b, ClipMapHandles h) {
-  h.constants = b.read(h.constants, Access::StorageRead);
+  h.constants = b.read(h.constants, Access::Uniform);
   for (TextureHandle& t : h.clip) t = b.read(t, Access::Sampled);
   return h;
 }

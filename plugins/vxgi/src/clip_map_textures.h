@@ -97,7 +97,7 @@ std::vector<uint32_t> mipFlagOffsets(const ClipMapFormat& format);
 /// Voxels per side of a brick of the clip-map (VXGI_BRICK_SHIFT in vxgi/scratch.glsl).
 inline constexpr uint32_t kBrickVoxels = 4;
 
-/// std430 VxgiClipMap in clip_map.glsl.
+/// The uniform block VxgiClipMap in clip_map.glsl (std140; this layout is the same in std430).
 struct ClipMapConstants {
   glm::ivec4 levelOrigin[5];
   float voxelSize0;

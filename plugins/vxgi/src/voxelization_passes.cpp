@@ -354,7 +354,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       TextureHandle target =
           b.write(b.createTexture(fmt::format("VXGI.VoxelizationTarget.L{}", level), targetDesc),
                   Access::ColorAttachment);
-      BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      BufferHandle constants = b.read(handles.constants, Access::Uniform);
       BufferHandle mats = b.read(materialBuffer, Access::StorageRead);
       BufferHandle flags = b.read(lightBuffer, Access::StorageRead);
       BufferHandle lights = b.read(bb.buffer(channels::SceneLights), Access::StorageRead);
@@ -414,7 +414,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       graph.addPass(fmt::format("VXGI.TestCube.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
         scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
         occupancy = b.write(occupancy, Access::StorageReadWrite);
-        BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+        BufferHandle constants = b.read(handles.constants, Access::Uniform);
         b.condition(decide);
         TextureHandle sums = scratchTexture;
         BufferHandle occupied = occupancy;
@@ -451,7 +451,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     };
     graph.addPass(fmt::format("VXGI.BrickList.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
       BufferHandle occupied = b.read(occupancy, Access::StorageRead);
-      BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      BufferHandle constants = b.read(handles.constants, Access::Uniform);
       handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
       if (wholeLevel) {
         resolveArguments = b.write(resolveArguments, Access::StorageReadWrite);
@@ -476,7 +476,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       // Read, and zeroed where it held sums, for the next level or frame.
       scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
       TextureHandle sums = scratchTexture;
-      BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      BufferHandle constants = b.read(handles.constants, Access::Uniform);
       BufferHandle arguments, list;
       if (wholeLevel) {
         arguments = b.read(resolveArguments, Access::Indirect);
@@ -523,7 +523,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     static_assert(kBrickVoxels == 4);
     graph.addPass(
         fmt::format("VXGI.DownsampleList.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-          BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+          BufferHandle constants = b.read(handles.constants, Access::Uniform);
           handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
           downsampleArguments = b.write(downsampleArguments, Access::StorageReadWrite);
           downsampleBricks = b.write(downsampleBricks, Access::StorageReadWrite);
@@ -548,7 +548,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         });
 
     graph.addPass(fmt::format("VXGI.Downsample.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-      BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+      BufferHandle constants = b.read(handles.constants, Access::Uniform);
       BufferHandle arguments = b.read(downsampleArguments, Access::Indirect);
       BufferHandle list = b.read(downsampleBricks, Access::StorageRead);
       writeAll(b, handles.clip);
@@ -590,7 +590,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   while (tail < mips && (format.mapSize >> (tail + 1)) > kBrickVoxels) ++tail;
   BufferHandle mipArguments, mipBlocks;
   graph.addPass("VXGI.MipList", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+    BufferHandle constants = b.read(handles.constants, Access::Uniform);
     BufferHandle levelFlags = b.read(handles.brickFlags, Access::StorageRead);
     handles.mipFlags = b.write(handles.mipFlags, Access::StorageReadWrite);
     mipArguments =
@@ -627,7 +627,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   });
 
   graph.addPass("VXGI.Mips", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-    BufferHandle constants = b.read(handles.constants, Access::StorageRead);
+    BufferHandle constants = b.read(handles.constants, Access::Uniform);
     // Source and destination are the same textures: the coarsest level, then each mip,
     // into the pyramid's slab.
     writeAll(b, handles.clip);

@@ -40,7 +40,11 @@ float vxgiAlphaPerDensity(float density, float k) {
   return vxgiAlphaPerDensity(density, k, 1.0 - exp(-max(density, 0.0) * VXGI_MAX_OPTICAL_DEPTH * k));
 }
 
-layout(std430, binding = 0) readonly buffer VxgiClipMap {
+// A uniform block, not a storage buffer: lavapipe reads a storage buffer one lane at a time
+// in a loop with a branch per lane and component (Mesa 22's emit_load_mem), and a uniform
+// block read at a constant offset as one scalar load for all lanes. Each cone step reads
+// these a few dozen times: DiffuseTracing 2–3% faster (vxgi README, stop 32).
+layout(std140, binding = 0) uniform VxgiClipMap {
   ivec4 levelOrigin[VXGI_MAX_LEVELS];  // xyz: first voxel of the level, in its own voxels
   float voxelSize0;                    // finest voxel edge, metres
   int mapSize;                         // voxels per side of a level
