@@ -43,7 +43,7 @@ float vxgiAlphaPerDensity(float density, float k) {
 // A uniform block, not a storage buffer: lavapipe reads a storage buffer one lane at a time
 // in a loop with a branch per lane and component (Mesa 22's emit_load_mem), and a uniform
 // block read at a constant offset as one scalar load for all lanes. Each cone step reads
-// these a few dozen times: DiffuseTracing 2–3% faster (vxgi README, stop 32).
+// these a few dozen times: DiffuseTracing 2–4% faster (vxgi README, stop 32).
 layout(std140, binding = 0) uniform VxgiClipMap {
   ivec4 levelOrigin[VXGI_MAX_LEVELS];  // xyz: first voxel of the level, in its own voxels
   float voxelSize0;                    // finest voxel edge, metres
