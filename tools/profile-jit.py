@@ -12,8 +12,9 @@ exits, disassembles them and attributes the samples:
     separate functions called from the shader (`call *%reg`); an RGBA16F trilinear sample
     of 8 lanes is one block of 64 eight-byte loads (`vmovsd (…)`).
 
-Samples per instruction compare the blocks' speed: a block whose samples per instruction
-are well above the shader's own loop code is waiting on memory.
+Samples per instruction compare the blocks' speed. Blocks of different instruction mixes
+run at different rates anyway; the same block compared across runs (a larger data set, a
+smaller texel format) shows what memory costs it.
 
   tools/profile-jit.py [--delay S] [--seconds S] [--top N] -- COMMAND [ARGS...]
   tools/profile-jit.py -- build/bin/bounce-render-bench --gi VXGI --sizes 128 --frames 400 \\
@@ -69,7 +70,7 @@ def disassemble(path, base):
 
 
 def is_load(instruction):
-    mnemonic, _, operands = instruction.partition(" ")
+    operands = instruction.partition(" ")[2]
     # A memory source operand: "(" before the last comma (AT&T puts the destination last).
     return "(" in operands.rsplit(",", 1)[0] if "," in operands else False
 
