@@ -395,37 +395,46 @@ VxgiPlace vxgiPlaceOf(vec3 p, int from) {
   return place;
 }
 
-// One facing slot (texture `clip`) at the step's place moved to q along the slot's axis,
-// with footprint `k` × the step's (vxgiClipToApex), from the levels vxgiLevelsAt picks
-// (clipped levels or mips alike: two fetches of one texture); the coarser one read at
-// vxgiCoarsePosition. `used`: the footprint the value is per (wider than the footprint
-// where q lies outside the finer levels). A macro because GLSL cannot pass a sampler
-// chosen at run time.
-#define VXGI_DEFINE_SLOT(name, clip, axis)                                                 \
-  vec4 name(vec3 q, float k, VxgiConeStart cone, VxgiPlace place, out float used) {        \
-    float shift = q[axis] - place.p[axis];                                                 \
-    /* The lod of the footprint k × the step's: log2(max(k·used, finest voxel)). */        \
-    float lod = max(place.lod + log2(k), 0.0);                                             \
-    used = max(k * place.used, clipMap.voxelSize0);                                        \
-    if (shift < -place.belowLast[axis] || shift >= place.aboveLast[axis])                  \
-      return vec4(0.0); /* outside the clip-map */                                         \
-    /* q is in p's finest level, or else in the next (the levels are nested with room to \
-       spare, and q lies within a footprint of p). */                                      \
-    bool inFinest = shift >= -place.belowFinest[axis] && shift < place.aboveFinest[axis];  \
-    VxgiLevels c = vxgiLevelsAt(lod, used, place.finest + (inFinest ? 0 : 1));              \
-    used = c.used;                                                                         \
-    float positive = cone.direction[axis] > 0.0 ? 1.0 : 0.0;                               \
-    vec3 signOffset = vec3(0.0, positive * vxgiSignOffset() * float(VXGI_SIGNS - 1), 0.0);  \
-    vxgiFetches += 2u;                                                                     \
-    vec3 qc = vxgiCoarsePosition(q, cone, axis, vxgiVoxelSize(c.coarser));                 \
-    /* Two mips are read where the coarser must be: the pair a mipmapped fetch blends. */  \
-    vec3 qa = c.level >= clipMap.levelCount ? qc : q;                                      \
-    vec4 a = textureLod(clip, vxgiStackCoord(qa, c.level) + signOffset, 0.0);              \
-    return mix(a, textureLod(clip, vxgiStackCoord(qc, c.coarser) + signOffset, 0.0), c.blend); \
-  }
-VXGI_DEFINE_SLOT(vxgiSlotX, voxelsClip0, 0)
-VXGI_DEFINE_SLOT(vxgiSlotY, voxelsClip1, 1)
-VXGI_DEFINE_SLOT(vxgiSlotZ, voxelsClip2, 2)
+// Where facing slot `axis` (texture voxelsClip<axis>) reads, at the step's place moved to q along the
+// slot's axis, with footprint `k` × the step's (vxgiClipToApex): the two levels vxgiLevelsAt
+// picks (clipped levels or mips alike: two fetches of one texture), the coarser one at
+// vxgiCoarsePosition. A step plans its three slots before it takes any fetch
+// (vxgiSampleAhead).
+struct VxgiSlotPlan {
+  vec3 finer;    // texture coordinates of the finer level's fetch
+  vec3 coarser;  // ... and of the coarser level's
+  float blend;   // weight of the coarser
+  float used;    // the footprint the value is per (wider than the footprint where q lies
+                 // outside the finer levels)
+  bool inside;   // false outside the clip-map: the slot reads nothing
+};
+VxgiSlotPlan vxgiPlanSlot(vec3 q, float k, VxgiConeStart cone, VxgiPlace place, int axis) {
+  VxgiSlotPlan plan;
+  float shift = q[axis] - place.p[axis];
+  // The lod of the footprint k × the step's: log2(max(k·used, finest voxel)).
+  float lod = max(place.lod + log2(k), 0.0);
+  float used = max(k * place.used, clipMap.voxelSize0);
+  plan.inside = shift >= -place.belowLast[axis] && shift < place.aboveLast[axis];
+  // q is in p's finest level, or else in the next (the levels are nested with room to
+  // spare, and q lies within a footprint of p).
+  bool inFinest = shift >= -place.belowFinest[axis] && shift < place.aboveFinest[axis];
+  VxgiLevels c = vxgiLevelsAt(lod, used, place.finest + (inFinest ? 0 : 1));
+  plan.used = c.used;
+  plan.blend = c.blend;
+  float positive = cone.direction[axis] > 0.0 ? 1.0 : 0.0;
+  vec3 signOffset = vec3(0.0, positive * vxgiSignOffset() * float(VXGI_SIGNS - 1), 0.0);
+  vec3 qc = vxgiCoarsePosition(q, cone, axis, vxgiVoxelSize(c.coarser));
+  // Two mips are read where the coarser must be: the pair a mipmapped fetch blends.
+  vec3 qa = c.level >= clipMap.levelCount ? qc : q;
+  plan.finer = vxgiStackCoord(qa, c.level) + signOffset;
+  plan.coarser = vxgiStackCoord(qc, c.coarser) + signOffset;
+  return plan;
+}
+// A planned slot's value from its two fetches (zero outside the clip-map).
+vec4 vxgiSlotValue(VxgiSlotPlan plan, vec4 finer, vec4 coarser) {
+  vxgiFetches += plan.inside ? 2u : 0u;
+  return plan.inside ? mix(finer, coarser, plan.blend) : vec4(0.0);
+}
 
 // How far, in footprints, a sample's filter reaches behind its centre: the finer of the
 // two blended levels reads texels up to one of its voxels away, each holding what lies
@@ -473,15 +482,25 @@ VxgiSample vxgiSampleAhead(vec3 p, inout float diameter, VxgiConeStart cone, out
   // voxel is c.used, and which exceeds the lod's floor only then).
   place.lod = max(f.lod, float(c.level));
   vec3 qx, qy, qz;
-  float kx, ky, kz, ux, uy, uz;
+  float kx, ky, kz;
   vxgiClipToApex(p, diameter, cone, 0, qx, kx);
   vxgiClipToApex(p, diameter, cone, 1, qy, ky);
   vxgiClipToApex(p, diameter, cone, 2, qz, kz);
-  vec4 x = vxgiSlotX(qx, kx, cone, place, ux), y = vxgiSlotY(qy, ky, cone, place, uy),
-       z = vxgiSlotZ(qz, kz, cone, place, uz);
+  VxgiSlotPlan px = vxgiPlanSlot(qx, kx, cone, place, 0), py = vxgiPlanSlot(qy, ky, cone, place, 1),
+               pz = vxgiPlanSlot(qz, kz, cone, place, 2);
+  // The six fetches back to back, after all of the step's arithmetic: on a CPU device each
+  // is a call whose texel loads wait on memory, and only loads a few hundred instructions
+  // apart are in flight together (the core's reorder window). DiffuseTracing 2% faster at
+  // 128³ and 5% at 64³ than with each slot's arithmetic between its fetches (vxgi README).
+  vec4 xa = textureLod(voxelsClip0, px.finer, 0.0), xb = textureLod(voxelsClip0, px.coarser, 0.0);
+  vec4 ya = textureLod(voxelsClip1, py.finer, 0.0), yb = textureLod(voxelsClip1, py.coarser, 0.0);
+  vec4 za = textureLod(voxelsClip2, pz.finer, 0.0), zb = textureLod(voxelsClip2, pz.coarser, 0.0);
+  vec4 x = vxgiSlotValue(px, xa, xb), y = vxgiSlotValue(py, ya, yb), z = vxgiSlotValue(pz, za, zb);
   // A slot's density (and emittance, radiance × density) is per its own footprint; the
-  // caller counts optical depth per `diameter`. ux..uz ≥ the finest voxel: no division by 0.
-  return vxgiCombine(cone.direction, x * (diameter / ux), y * (diameter / uy), z * (diameter / uz));
+  // caller counts optical depth per `diameter`. Each `used` ≥ the finest voxel: no division
+  // by 0.
+  return vxgiCombine(cone.direction, x * (diameter / px.used), y * (diameter / py.used),
+                     z * (diameter / pz.used));
 }
 #endif  // !VXGI_AO_MODE
 
