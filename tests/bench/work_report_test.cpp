@@ -71,8 +71,42 @@ TEST(WorkReport, TableNamesEveryPass) {
   EXPECT_NE(table.find("reported no work: Quiet"), std::string::npos) << table;
   EXPECT_NE(table.find("transfer bytes"), std::string::npos) << table;
   EXPECT_NE(table.find("25.0%"), std::string::npos) << table;
-  const std::string ceilingRows = ceilingsTable(ceilings);
+  const std::string ceilingRows = ceilingsTable({ceilings});
   EXPECT_NE(ceilingRows.find("vkCmdCopyImage"), std::string::npos) << ceilingRows;
+  EXPECT_NE(ceilingRows.find("200 M"), std::string::npos) << ceilingRows;
+}
+
+// The ceilings are measured before the frames and after each size and variant; a column is
+// compared with the mean of the two around it, and the table shows their spread.
+TEST(WorkReport, ColumnsAreComparedWithTheCeilingsAroundThem) {
+  DeviceCeilings before = someCeilings(), after = someCeilings(), last = someCeilings();
+  after.textureSamplesPerSecond = 100e6;  // the machine slowed down during the frames
+  last.textureSamplesPerSecond = 400e6;
+  const DeviceCeilings around = meanOf(before, after);
+  EXPECT_DOUBLE_EQ(around.textureSamplesPerSecond, 150e6);
+  EXPECT_DOUBLE_EQ(around.imageBytesPerSecond, 4e9);
+  EXPECT_DOUBLE_EQ(medianOf({before, after, last}).textureSamplesPerSecond, 200e6);
+  EXPECT_DOUBLE_EQ(medianOf({before, after}).textureSamplesPerSecond, 150e6);
+  EXPECT_DOUBLE_EQ(lowestOf({before, after, last}).textureSamplesPerSecond, 100e6);
+  EXPECT_DOUBLE_EQ(highestOf({before, after, last}).textureSamplesPerSecond, 400e6);
+
+  MeasuredColumn column = someColumn();
+  column.ceilings = around;
+  const DeviceCeilings overall = someCeilings();
+  // 1e8 samples/s against 1.5e8, not against the overall 2e8.
+  EXPECT_NE(workTable(column, &overall).find("66.7%"), std::string::npos) << workTable(column, &overall);
+  const nlohmann::json j =
+      benchJson("lavapipe", "scene.gltf", "Ambient", 3, &overall, {column, someColumn()});
+  EXPECT_DOUBLE_EQ(j["runs"][0]["ceilings"]["textureSamplesPerSecond"].get<double>(), 150e6);
+  EXPECT_NEAR(j["runs"][0]["passes"][0]["work"]["textureSamples"]["fraction"].get<double>(), 2.0 / 3.0,
+              1e-12);
+  EXPECT_FALSE(j["runs"][1].contains("ceilings"));  // a column without its own: the overall ones
+  EXPECT_DOUBLE_EQ(j["runs"][1]["passes"][0]["work"]["textureSamples"]["fraction"].get<double>(), 0.5);
+
+  const std::string table = ceilingsTable({before, after, last});
+  EXPECT_NE(table.find("3 measurements"), std::string::npos) << table;
+  // The coherent row: median, lowest, highest.
+  EXPECT_NE(table.find("200 M |      100 M |      400 M |"), std::string::npos) << table;
 }
 
 TEST(WorkReport, JsonIsWrittenAndParses) {

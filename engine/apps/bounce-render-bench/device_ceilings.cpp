@@ -5,6 +5,7 @@
 #include "bounce/gpu/buffer.h"
 #include "bounce/gpu/image.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -229,6 +230,49 @@ std::string DeviceCeilings::describe(WorkUnit unit) {
       return "none (rays/s reported as measured)";
   }
   return {};
+}
+
+namespace {
+
+// Every rate a DeviceCeilings holds (not `seconds`).
+constexpr double DeviceCeilings::*kRates[] = {
+    &DeviceCeilings::textureSamplesPerSecond, &DeviceCeilings::scatteredTextureSamplesPerSecond,
+    &DeviceCeilings::bufferBytesPerSecond,    &DeviceCeilings::imageBytesPerSecond,
+    &DeviceCeilings::transferBytesPerSecond,  &DeviceCeilings::flopsPerSecond};
+
+// Each rate of `measurements` picked by `pick` from its sorted values.
+template <class Pick>
+DeviceCeilings elementWise(const std::vector<DeviceCeilings>& measurements, Pick pick) {
+  DeviceCeilings c;
+  for (auto rate : kRates) {
+    std::vector<double> values;
+    for (const DeviceCeilings& m : measurements) values.push_back(m.*rate);
+    std::sort(values.begin(), values.end());
+    c.*rate = pick(values);
+  }
+  for (const DeviceCeilings& m : measurements) c.seconds += m.seconds;
+  return c;
+}
+
+}  // namespace
+
+DeviceCeilings meanOf(const DeviceCeilings& a, const DeviceCeilings& b) {
+  return elementWise({a, b}, [](const std::vector<double>& v) { return 0.5 * (v[0] + v[1]); });
+}
+
+DeviceCeilings medianOf(const std::vector<DeviceCeilings>& measurements) {
+  return elementWise(measurements, [](const std::vector<double>& v) {
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  });
+}
+
+DeviceCeilings lowestOf(const std::vector<DeviceCeilings>& measurements) {
+  return elementWise(measurements, [](const std::vector<double>& v) { return v.front(); });
+}
+
+DeviceCeilings highestOf(const std::vector<DeviceCeilings>& measurements) {
+  return elementWise(measurements, [](const std::vector<double>& v) { return v.back(); });
 }
 
 DeviceCeilings measureDeviceCeilings(const gpu::Device& device, gpu::PipelineCache& pipelines, int runs) {

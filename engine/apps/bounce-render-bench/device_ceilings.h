@@ -1,9 +1,11 @@
 #pragma once
 // What the device can do at most, measured by small compute microbenchmarks in the same
-// run as the passes they are compared with: trilinear RGBA16F 3D-texture samples/s
-// (coherent, and scattered as a cone tracer's lanes are), storage-buffer and storage-image bandwidth (read +
-// write bytes/s of a copy shader), the same for a transfer-command image copy, and the FMA rate. Each is the
-// median of several dispatches after a warm-up.
+// run as the passes they are compared with (before the frames, and again after each size
+// and variant: a column is compared with the mean of the measurements around it, so a
+// machine that slows down or speeds up during the run moves both sides of the ratio): trilinear RGBA16F
+// 3D-texture samples/s (coherent, and scattered as a cone tracer's lanes are), storage-buffer and
+// storage-image bandwidth (read + write bytes/s of a copy shader), the same for a transfer-command image
+// copy, and the FMA rate. Each is the median of several dispatches after a warm-up.
 
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/pass_work.h"
@@ -11,6 +13,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace bounce {
 
@@ -35,6 +38,15 @@ struct DeviceCeilings {
   /// What the scattered ceiling of `unit` measured (empty where there is none).
   static std::string describeScattered(WorkUnit unit);
 };
+
+/// The element-wise mean of two measurements: the ceilings of the frames measured between
+/// them.
+DeviceCeilings meanOf(const DeviceCeilings& a, const DeviceCeilings& b);
+/// The element-wise median of `measurements` (not empty; `seconds` is their sum).
+DeviceCeilings medianOf(const std::vector<DeviceCeilings>& measurements);
+/// The element-wise lowest and highest of `measurements` (not empty).
+DeviceCeilings lowestOf(const std::vector<DeviceCeilings>& measurements);
+DeviceCeilings highestOf(const std::vector<DeviceCeilings>& measurements);
 
 /// Runs the microbenchmarks (a second or two on lavapipe). `runs` dispatches each after a
 /// warm-up; shaders from engine/apps/bounce-render-bench/shaders through `pipelines`.

@@ -11,18 +11,20 @@
 // Passes named NAME.L<n> (one per level of a multi-level structure) are summed into one
 // NAME.L* row (--per-level shows each).
 //
-// Against the device's limits: before the frames it measures the device's ceilings with
-// compute microbenchmarks (device_ceilings.h: trilinear RGBA16F 3D samples/s, coherent
-// and with scattered lanes; storage buffer and storage image bytes/s; FMA flops/s; about
-// a second; --no-ceilings skips them). After the timed frames of each size and variant it renders one more,
+// Against the device's limits: before the frames, and again after those of each size and
+// variant, it measures the device's ceilings with compute microbenchmarks
+// (device_ceilings.h: trilinear RGBA16F 3D samples/s, coherent and with scattered lanes;
+// storage buffer and storage image bytes/s; FMA flops/s; about a second each time;
+// --no-ceilings skips them); a size and variant is compared with the mean of the two
+// measurements around its frames. After the timed frames of each size and variant it renders one more,
 // untimed frame with work counting on (shaders' countWork calls compile in and count; the atomics would
 // distort the times). Each pass's work is what it reported while recording (PassContext::addWork, median over
 // the timed frames that ran it) plus what its shaders counted (only if it ran in the counted frame: an
 // incremental pass that had nothing to do then shows its recorded work alone); a second table per size and
 // variant gives, per pass and unit, the work per frame, the rate its median time gives, the ceiling for that
 // unit and the fraction of it reached.
-// `--json FILE` writes the ceilings and, per size and variant, each pass's ms, work,
-// ceiling and fraction.
+// `--json FILE` writes the ceilings (their median) and, per size and variant, its own
+// ceilings and each pass's ms, work, ceiling and fraction.
 
 #include "bounce-render-bench/light_move_convergence.h"
 #include "bounce/core/log.h"
@@ -56,6 +58,7 @@ struct Measurement {
   std::map<std::string, std::array<bool, bounce::kWorkUnitCount>> gpuCounted;
   double frameMs = 0.0;
   uint64_t persistentBytes = 0;
+  std::optional<bounce::DeviceCeilings> ceilings;  ///< measured around these frames
 };
 
 /// Adds `pass` to `order` after `previous` (the pass before it in the frame that ran it),
@@ -105,7 +108,7 @@ void addLevelSums(Measurement& m) {
 /// One size and variant's passes, in the table's row order, for the work report.
 bounce::MeasuredColumn measuredColumn(const Measurement& m, uint32_t size, const std::string& variant,
                                       const std::vector<std::string>& rows) {
-  bounce::MeasuredColumn c{size, variant, m.frameMs, {}};
+  bounce::MeasuredColumn c{size, variant, m.frameMs, {}, m.ceilings};
   for (const std::string& row : rows) {
     auto ms = m.passMs.find(row);
     if (ms == m.passMs.end()) continue;  // not run at this size or variant
@@ -191,11 +194,13 @@ void warnIfMachineIsBusy(const bounce::gpu::Device& device) {
 /// the JSON. Returns the exit status.
 int reportWork(std::map<std::pair<size_t, uint32_t>, Measurement>& results,
                const std::vector<uint32_t>& sizes, const std::vector<bounce::BenchVariant>& variants,
-               const std::vector<std::string>& rows, const std::optional<bounce::DeviceCeilings>& ceilings,
+               const std::vector<std::string>& rows, const std::vector<bounce::DeviceCeilings>& ceilings,
                const bounce::gpu::Device& device, const std::string& scene, const std::string& technique,
                uint32_t frames, const std::string& jsonPath) {
-  const bounce::DeviceCeilings* c = ceilings ? &*ceilings : nullptr;
-  if (c) fmt::print("\n{}", bounce::ceilingsTable(*c));
+  const std::optional<bounce::DeviceCeilings> median =
+      ceilings.empty() ? std::nullopt : std::optional(bounce::medianOf(ceilings));
+  const bounce::DeviceCeilings* c = median ? &*median : nullptr;
+  if (c) fmt::print("\n{}", bounce::ceilingsTable(ceilings));
   std::vector<bounce::MeasuredColumn> columns;
   for (uint32_t s : sizes)
     for (size_t v = 0; v < variants.size(); ++v) {
@@ -301,16 +306,22 @@ int main(int argc, char** argv) {
   }
   bounce::Renderer renderer(engine, *device);
   warnIfMachineIsBusy(*device);
-  std::optional<bounce::DeviceCeilings> ceilings;
-  if (!noCeilings) {
+  // Before the frames, and again after each size and variant (the column between two
+  // measurements is compared with their mean): empty with --no-ceilings.
+  std::vector<bounce::DeviceCeilings> ceilings;
+  auto measureCeilings = [&]() -> bool {
+    if (noCeilings) return true;
     try {
-      ceilings = bounce::measureDeviceCeilings(*device, renderer.pipelines());
+      ceilings.push_back(bounce::measureDeviceCeilings(*device, renderer.pipelines()));
     } catch (const std::exception& e) {
       bounce::app::printError("bounce-render-bench", fmt::format("device ceilings: {}", e.what()));
-      return 2;
+      return false;
     }
-    fmt::print(stderr, "bounce-render-bench: device ceilings measured in {:.2f} s\n", ceilings->seconds);
-  }
+    fmt::print(stderr, "bounce-render-bench: device ceilings measured in {:.2f} s\n",
+               ceilings.back().seconds);
+    return true;
+  };
+  if (!measureCeilings()) return 2;
   const bounce::Camera camera =
       engine.scene()->cameras().empty() ? bounce::Camera{} : engine.scene()->cameras()[0];
 
@@ -359,6 +370,8 @@ int main(int argc, char** argv) {
       for (const auto& r : renderer.executor().memory().resources)
         m.persistentBytes += r.persistent ? r.bytes : 0;
       applied->restore(engine.cvars());
+      if (!measureCeilings()) return 2;
+      if (!noCeilings) m.ceilings = bounce::meanOf(ceilings[ceilings.size() - 2], ceilings.back());
       fmt::print(stderr, "bounce-render-bench: {}² {}: {:.3f} ms per frame\n", size,
                  variants[v].label.empty() ? "(current settings)" : variants[v].label, m.frameMs);
     }

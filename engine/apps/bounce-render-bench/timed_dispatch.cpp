@@ -1,38 +1,39 @@
 #include "bounce-render-bench/timed_dispatch.h"
 
 #include <algorithm>
-#include <array>
+#include <chrono>
 #include <vector>
 
 namespace bounce {
 
-TimedDispatch::TimedDispatch(const gpu::Device& device) : device_(device) {
-  VkQueryPoolCreateInfo qi{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-  qi.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  qi.queryCount = 2;
-  gpu::check(vkCreateQueryPool(device.handle(), &qi, nullptr, &queries_), "vkCreateQueryPool");
+namespace {
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
 }
 
-TimedDispatch::~TimedDispatch() { vkDestroyQueryPool(device_.handle(), queries_, nullptr); }
+}  // namespace
+
+TimedDispatch::TimedDispatch(const gpu::Device& device) : device_(device) {
+  std::vector<double> empty;
+  for (int run = 0; run < 9; ++run) empty.push_back(wallSeconds([](VkCommandBuffer) {}));
+  emptySubmission_ = median(empty);
+}
+
+double TimedDispatch::wallSeconds(const std::function<void(VkCommandBuffer)>& record) const {
+  const auto start = std::chrono::steady_clock::now();
+  device_.submitAndWait(record);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 double TimedDispatch::medianSeconds(const std::function<void(VkCommandBuffer)>& record, int runs) const {
+  wallSeconds(record);  // warm-up
   std::vector<double> seconds;
-  for (int run = -1; run < runs; ++run) {
-    device_.submitAndWait([&](VkCommandBuffer cmd) {
-      vkCmdResetQueryPool(cmd, queries_, 0, 2);
-      vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_, 0);
-      record(cmd);
-      vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_, 1);
-    });
-    std::array<uint64_t, 2> ticks{};
-    gpu::check(vkGetQueryPoolResults(device_.handle(), queries_, 0, 2, sizeof(ticks), ticks.data(),
-                                     sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-               "vkGetQueryPoolResults");
-    if (run >= 0)
-      seconds.push_back(double(ticks[1] - std::min(ticks[0], ticks[1])) * device_.timestampPeriod() * 1e-9);
-  }
-  std::sort(seconds.begin(), seconds.end());
-  return seconds[seconds.size() / 2];
+  for (int run = 0; run < std::max(runs, 1); ++run) seconds.push_back(wallSeconds(record));
+  // A floor of 1 µs keeps the rates finite should the work ever take less than the
+  // empty submission's median.
+  return std::max(median(seconds) - emptySubmission_, 1e-6);
 }
 
 }  // namespace bounce

@@ -33,6 +33,20 @@ std::string jsonKey(WorkUnit unit) {
   return kKeys[size_t(unit)];
 }
 
+const DeviceCeilings* ceilingsFor(const MeasuredColumn& column, const DeviceCeilings* overall) {
+  return column.ceilings ? &*column.ceilings : overall;
+}
+
+nlohmann::json ceilingsJson(const DeviceCeilings& c) {
+  return {{"textureSamplesPerSecond", c.textureSamplesPerSecond},
+          {"scatteredTextureSamplesPerSecond", c.scatteredTextureSamplesPerSecond},
+          {"bufferBytesPerSecond", c.bufferBytesPerSecond},
+          {"imageBytesPerSecond", c.imageBytesPerSecond},
+          {"transferBytesPerSecond", c.transferBytesPerSecond},
+          {"flopsPerSecond", c.flopsPerSecond},
+          {"seconds", c.seconds}};
+}
+
 }  // namespace
 
 std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* ceilings) {
@@ -51,15 +65,34 @@ std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* 
   return rates;
 }
 
-std::string ceilingsTable(const DeviceCeilings& c) {
-  std::string out = fmt::format("| {:<54} | {:>14} |\n|{:-<56}|{:->15}:|\n",
-                                "device ceiling (median of runs)", "per second", "", "");
+std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements) {
+  const DeviceCeilings median = medianOf(measurements);
+  const bool several = measurements.size() > 1;
+  const DeviceCeilings lowest = lowestOf(measurements), highest = highestOf(measurements);
+  std::string out;
+  if (several)
+    out = fmt::format("| {:<54} | {:>14} | {:>10} | {:>10} |\n|{:-<56}|{:->15}:|{:->11}:|{:->11}:|\n",
+                      fmt::format("device ceiling ({} measurements)", measurements.size()), "median per s",
+                      "lowest", "highest", "", "", "", "");
+  else
+    out = fmt::format("| {:<54} | {:>14} |\n|{:-<56}|{:->15}:|\n", "device ceiling (median of runs)",
+                      "per second", "", "");
+  auto row = [&](const std::string& name, auto rate) {
+    out += several ? fmt::format("| {:<54} | {:>14} | {:>10} | {:>10} |\n", name, si(*rate(median)),
+                                 si(*rate(lowest)), si(*rate(highest)))
+                   : fmt::format("| {:<54} | {:>14} |\n", name, si(*rate(median)));
+  };
   for (WorkUnit u : {WorkUnit::TextureSamples, WorkUnit::BufferBytes, WorkUnit::ImageBytes,
                      WorkUnit::TransferBytes, WorkUnit::Flops}) {
-    out += fmt::format("| {:<54} | {:>14} |\n", DeviceCeilings::describe(u), si(*c.perSecond(u)));
-    if (const auto scattered = c.scatteredPerSecond(u))
-      out += fmt::format("| {:<54} | {:>14} |\n", DeviceCeilings::describeScattered(u), si(*scattered));
+    row(DeviceCeilings::describe(u), [u](const DeviceCeilings& c) { return c.perSecond(u); });
+    if (median.scatteredPerSecond(u))
+      row(DeviceCeilings::describeScattered(u),
+          [u](const DeviceCeilings& c) { return c.scatteredPerSecond(u); });
   }
+  if (several)
+    out +=
+        "each size and variant is compared with the mean of the measurements just before and after its "
+        "frames\n";
   return out;
 }
 
@@ -72,7 +105,7 @@ std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilin
       "-------------:|---------:|----------:|\n";
   std::vector<std::string> silent;
   for (const MeasuredPass& pass : column.passes) {
-    const std::vector<WorkRate> rates = workRates(pass, ceilings);
+    const std::vector<WorkRate> rates = workRates(pass, ceilingsFor(column, ceilings));
     if (rates.empty()) silent.push_back(pass.name);
     for (const WorkRate& r : rates)
       out += fmt::format("| {:<26} | {:<16} | {:>12} | {:>10.3f} | {:>12} | {:>12} | {:>8} | {:>9} |\n",
@@ -99,25 +132,16 @@ nlohmann::json benchJson(const std::string& device, const std::string& scene, co
   j["scene"] = scene;
   j["technique"] = technique;
   j["timedFrames"] = timedFrames;
-  if (ceilings) {
-    j["ceilings"] = {{"textureSamplesPerSecond", ceilings->textureSamplesPerSecond},
-                     {"scatteredTextureSamplesPerSecond", ceilings->scatteredTextureSamplesPerSecond},
-                     {"bufferBytesPerSecond", ceilings->bufferBytesPerSecond},
-                     {"imageBytesPerSecond", ceilings->imageBytesPerSecond},
-                     {"transferBytesPerSecond", ceilings->transferBytesPerSecond},
-                     {"flopsPerSecond", ceilings->flopsPerSecond},
-                     {"seconds", ceilings->seconds}};
-  } else {
-    j["ceilings"] = nullptr;
-  }
+  j["ceilings"] = ceilings ? ceilingsJson(*ceilings) : nlohmann::json(nullptr);
   j["runs"] = nlohmann::json::array();
   for (const MeasuredColumn& c : columns) {
     nlohmann::json run = {{"size", c.size}, {"variant", c.variant}, {"frameMs", c.frameMs}};
+    if (c.ceilings) run["ceilings"] = ceilingsJson(*c.ceilings);
     run["passes"] = nlohmann::json::array();
     for (const MeasuredPass& p : c.passes) {
       nlohmann::json pass = {{"name", p.name}, {"ms", p.milliseconds}};
       pass["work"] = nlohmann::json::object();
-      for (const WorkRate& r : workRates(p, ceilings)) {
+      for (const WorkRate& r : workRates(p, ceilingsFor(c, ceilings))) {
         pass["work"][jsonKey(r.unit)] = {
             {"perFrame", r.amount},
             {"perSecond", r.perSecond},

@@ -28,6 +28,9 @@ struct MeasuredColumn {
   std::string variant;  ///< empty: the current settings
   double frameMs = 0.0;
   std::vector<MeasuredPass> passes;  ///< in execution order
+  /// The ceilings measured around this column's frames (meanOf those just before and just
+  /// after); none: the report's overall ceilings apply.
+  std::optional<DeviceCeilings> ceilings;
 };
 
 /// One unit of one pass against its ceiling.
@@ -43,16 +46,17 @@ struct WorkRate {
 /// The units `pass` did work in, in WorkUnit order.
 std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* ceilings);
 
-/// "| ceiling | measured |" rows for the five ceilings.
-std::string ceilingsTable(const DeviceCeilings& ceilings);
+/// "| ceiling | measured |" rows for the five ceilings; with several measurements (not
+/// empty), their median, lowest and highest.
+std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements);
 /// A row per pass and unit of work: work per frame, ms, rate, ceiling, fraction (and of
-/// the scattered ceiling, for texture samples). Passes
-/// that reported no work are listed at the end by name.
+/// the scattered ceiling, for texture samples), against the column's own ceilings where it
+/// has them, else `ceilings`. Passes that reported no work are listed at the end by name.
 std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilings);
 
 /// Everything above as one document: device, scene, technique, frames, the ceilings (null
-/// without), and per size/variant the frame time and each pass's ms, work, ceiling and
-/// fraction.
+/// without), and per size/variant the frame time, its own ceilings (where it has them) and
+/// each pass's ms, work, ceiling and fraction.
 nlohmann::json benchJson(const std::string& device, const std::string& scene, const std::string& technique,
                          uint32_t timedFrames, const DeviceCeilings* ceilings,
                          const std::vector<MeasuredColumn>& columns);
