@@ -10,9 +10,9 @@
 //   VXGI_DOWNSAMPLE_MODE 1: the coarsest clipped level → mip 0 of the pyramid
 //   VXGI_DOWNSAMPLE_MODE 2: pyramid mip m → mip m+1
 //   VXGI_DOWNSAMPLE_MODE 3: the pyramid's tail, the mips of one 4³ block or less, each
-//                           from the one before, in one workgroup (a dispatch costs
-//                           lavapipe ~0.15 ms on a 2-core machine however little it does,
-//                           and these are a few dozen voxels each)
+//                           from the one before, in one workgroup (a pyramid dispatch
+//                           cost lavapipe ~0.15 ms with a shader that returned at once,
+//                           vxgi README stop 30, and these are a few dozen voxels each)
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
