@@ -256,10 +256,6 @@ DeviceCeilings elementWise(const std::vector<DeviceCeilings>& measurements, Pick
 
 }  // namespace
 
-DeviceCeilings meanOf(const DeviceCeilings& a, const DeviceCeilings& b) {
-  return elementWise({a, b}, [](const std::vector<double>& v) { return 0.5 * (v[0] + v[1]); });
-}
-
 DeviceCeilings medianOf(const std::vector<DeviceCeilings>& measurements) {
   return elementWise(measurements, [](const std::vector<double>& v) {
     const size_t n = v.size();

@@ -1,8 +1,9 @@
 #pragma once
 // What the device can do at most, measured by small compute microbenchmarks in the same
 // run as the passes they are compared with (before the frames, and again after each size
-// and variant: a column is compared with the mean of the measurements around it, so a
-// machine that slows down or speeds up during the run moves both sides of the ratio): trilinear RGBA16F
+// and variant: a column is compared with the higher of the measurements around it, so a
+// machine that is slower through a column's frames and both measurements moves both sides of
+// the ratio, and a reading lowered by a moment's other load is passed over): trilinear RGBA16F
 // 3D-texture samples/s (coherent, and scattered as a cone tracer's lanes are), storage-buffer and
 // storage-image bandwidth (read + write bytes/s of a copy shader), the same for a transfer-command image
 // copy, and the FMA rate. Each is the median of several dispatches after a warm-up.
@@ -39,12 +40,12 @@ struct DeviceCeilings {
   static std::string describeScattered(WorkUnit unit);
 };
 
-/// The element-wise mean of two measurements: the ceilings of the frames measured between
-/// them.
-DeviceCeilings meanOf(const DeviceCeilings& a, const DeviceCeilings& b);
 /// The element-wise median of `measurements` (not empty; `seconds` is their sum).
 DeviceCeilings medianOf(const std::vector<DeviceCeilings>& measurements);
-/// The element-wise lowest and highest of `measurements` (not empty).
+/// The element-wise lowest and highest of `measurements` (not empty). The highest of the two
+/// measurements around a size and variant is its ceilings: other load on the cores only ever
+/// lowers a reading (one of five read 131 M samples/s against 169–174 M, and the mean of
+/// the two around a column raised its fractions by 13%).
 DeviceCeilings lowestOf(const std::vector<DeviceCeilings>& measurements);
 DeviceCeilings highestOf(const std::vector<DeviceCeilings>& measurements);
 

@@ -15,8 +15,8 @@
 // variant, it measures the device's ceilings with compute microbenchmarks
 // (device_ceilings.h: trilinear RGBA16F 3D samples/s, coherent and with scattered lanes;
 // storage buffer and storage image bytes/s; FMA flops/s; about a second each time;
-// --no-ceilings skips them); a size and variant is compared with the mean of the two
-// measurements around its frames. After the timed frames of each size and variant it renders one more,
+// --no-ceilings skips them); a size and variant is compared with the higher of the
+// two measurements around its frames. After the timed frames of each size and variant it renders one more,
 // untimed frame with work counting on (shaders' countWork calls compile in and count; the atomics would
 // distort the times). Each pass's work is what it reported while recording (PassContext::addWork, median over
 // the timed frames that ran it) plus what its shaders counted (only if it ran in the counted frame: an
@@ -307,7 +307,7 @@ int main(int argc, char** argv) {
   bounce::Renderer renderer(engine, *device);
   warnIfMachineIsBusy(*device);
   // Before the frames, and again after each size and variant (the column between two
-  // measurements is compared with their mean): empty with --no-ceilings.
+  // measurements is compared with the higher): empty with --no-ceilings.
   std::vector<bounce::DeviceCeilings> ceilings;
   auto measureCeilings = [&]() -> bool {
     if (noCeilings) return true;
@@ -371,7 +371,7 @@ int main(int argc, char** argv) {
         m.persistentBytes += r.persistent ? r.bytes : 0;
       applied->restore(engine.cvars());
       if (!measureCeilings()) return 2;
-      if (!noCeilings) m.ceilings = bounce::meanOf(ceilings[ceilings.size() - 2], ceilings.back());
+      if (!noCeilings) m.ceilings = bounce::highestOf({ceilings[ceilings.size() - 2], ceilings.back()});
       fmt::print(stderr, "bounce-render-bench: {}² {}: {:.3f} ms per frame\n", size,
                  variants[v].label.empty() ? "(current settings)" : variants[v].label, m.frameMs);
     }

@@ -91,7 +91,7 @@ std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements) {
   }
   if (several)
     out +=
-        "each size and variant is compared with the mean of the measurements just before and after its "
+        "each size and variant is compared with the higher of the measurements just before and after its "
         "frames\n";
   return out;
 }

@@ -28,8 +28,8 @@ struct MeasuredColumn {
   std::string variant;  ///< empty: the current settings
   double frameMs = 0.0;
   std::vector<MeasuredPass> passes;  ///< in execution order
-  /// The ceilings measured around this column's frames (meanOf those just before and just
-  /// after); none: the report's overall ceilings apply.
+  /// The ceilings measured around this column's frames (highestOf those just before and
+  /// just after); none: the report's overall ceilings apply.
   std::optional<DeviceCeilings> ceilings;
 };
 
