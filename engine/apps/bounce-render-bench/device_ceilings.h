@@ -1,12 +1,14 @@
 #pragma once
 // What the device can do at most, measured by small compute microbenchmarks in the same
-// run as the passes they are compared with (before the frames, and again after each size
-// and variant: a column is compared with the higher of the measurements around it, so a
-// machine that is slower through a column's frames and both measurements moves both sides of
-// the ratio, and a reading lowered by a moment's other load is passed over): trilinear RGBA16F
-// 3D-texture samples/s (coherent, and scattered as a cone tracer's lanes are), storage-buffer and
-// storage-image bandwidth (read + write bytes/s of a copy shader), the same for a transfer-command image
+// run as the passes they are compared with: trilinear RGBA16F 3D-texture samples/s
+// (coherent, and scattered as a cone tracer's lanes are), storage-buffer and storage-image
+// bandwidth (read + write bytes/s of a copy shader), the same for a transfer-command image
 // copy, and the FMA rate. Each is the median of several dispatches after a warm-up.
+//
+// bounce-render-bench measures them before the frames and again after each size and
+// variant, and compares a column with the higher of the two measurements around it: a
+// machine slower through a column's frames and both measurements moves both sides of the
+// ratio, and a reading lowered by a moment's other load is passed over.
 
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/pass_work.h"
