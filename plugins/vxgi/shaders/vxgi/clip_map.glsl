@@ -395,11 +395,12 @@ VxgiPlace vxgiPlaceOf(vec3 p, int from) {
   return place;
 }
 
-// Where facing slot `axis` (texture voxelsClip<axis>) reads, at the step's place moved to q along the
-// slot's axis, with footprint `k` × the step's (vxgiClipToApex): the two levels vxgiLevelsAt
-// picks (clipped levels or mips alike: two fetches of one texture), the coarser one at
-// vxgiCoarsePosition. A step plans its three slots before it takes any fetch
-// (vxgiSampleAhead).
+// Where facing slot `axis` (texture voxelsClip<axis>) reads, at the step's place moved to q
+// along the slot's axis, with footprint `k` × the step's (vxgiClipToApex): the two levels
+// vxgiLevelsAt picks (clipped levels or mips alike: two fetches of one texture), the coarser
+// one at vxgiCoarsePosition. A step plans its three slots before it takes any fetch
+// (vxgiSampleAhead); a slot outside the clip-map fetches all the same (clamped coordinates)
+// and reads 0.
 struct VxgiSlotPlan {
   vec3 finer;    // texture coordinates of the finer level's fetch
   vec3 coarser;  // ... and of the coarser level's
