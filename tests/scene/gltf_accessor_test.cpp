@@ -184,6 +184,20 @@ TEST(GltfAccessors, SparseAccessorWithoutBufferViewStartsFromZeros) {
   EXPECT_EQ(p.positions, test::kTriangle);
 }
 
+// Nothing bounds a data-less accessor's count but the file: a small file asking for 2³¹
+// zero-filled positions (24 GB) fails with a one-line error instead of allocating them.
+TEST(GltfAccessors, DataLessAccessorWithMoreElementsThanTheFileHasBytesFails) {
+  GltfBuilder b;
+  int pos = b.accessor(-1, test::kFloat, 3, "VEC3");
+  b.doc["accessors"][pos]["count"] = 2147483648u;
+  b.node({{"mesh", b.mesh("Huge", {GltfBuilder::primitive(pos, b.indices16({0, 1, 2}))})}});
+  TempDir dir;
+  GltfLoadResult r = test::loadBuilt(b, dir);
+  EXPECT_FALSE(r.scene);
+  EXPECT_NE(r.error.find("count 2147483648 without a bufferView"), std::string::npos) << r.error;
+  EXPECT_EQ(r.error.find('\n'), std::string::npos) << r.error;
+}
+
 TEST(GltfAccessors, SparseIndexPastTheAccessorFails) {
   GltfBuilder b;
   int pos = b.accessor(b.view(test::bytesOf(test::kTriangle)), test::kFloat, 3, "VEC3");

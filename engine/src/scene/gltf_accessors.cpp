@@ -154,10 +154,21 @@ AccessorLayout checkLayout(const AccessorSite& s, const tinygltf::Accessor& a, s
                       a.count, elementSize, layout.stride, a.byteOffset, a.bufferView, bytes.size()));
     }
     layout.dense = bytes.subspan(a.byteOffset);
-  } else if (a.count > UINT32_MAX) {
-    // Without data in the file nothing bounds the count; more than a 32-bit index can
-    // address is certainly bogus (and would only exhaust memory).
-    s.fail(fmt::format("count {} is too large", a.count));
+  } else {
+    // Without data nothing in the accessor bounds its count but memory (it is all zeros,
+    // plus any sparse values). A real mesh's vertices are described by data somewhere in
+    // the file (another attribute, or the indices), so a data-less accessor has no more
+    // elements than the file has bytes of buffers; 4096 more allow small ones in files
+    // with none. A fuzzed 2 kB file asked for 2³¹ (24 GB of floats, zero-filled).
+    size_t bufferBytes = 0;
+    for (const tinygltf::Buffer& b : s.ctx.model.buffers) bufferBytes += b.data.size();
+    const size_t limit = std::min<size_t>(bufferBytes + 4096, UINT32_MAX);
+    if (a.count > limit) {
+      s.fail(
+          fmt::format("count {} without a bufferView is more than the file's {} bytes of buffers can "
+                      "describe (at most {})",
+                      a.count, bufferBytes, limit));
+    }
   }
 
   if (!a.sparse.isSparse) return layout;
