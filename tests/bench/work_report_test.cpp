@@ -107,7 +107,7 @@ TEST(WorkReport, ColumnsAreComparedWithTheCeilingsAroundThem) {
   EXPECT_DOUBLE_EQ(j["runs"][1]["passes"][0]["work"]["textureSamples"]["fraction"].get<double>(), 0.5);
 
   const std::string table = ceilingsTable({before, after, last});
-  EXPECT_NE(table.find("3 measurements"), std::string::npos) << table;
+  EXPECT_NE(table.find("3 measured"), std::string::npos) << table;
   // The coherent row: median, lowest, highest.
   EXPECT_NE(table.find("150 M |      100 M |      400 M |"), std::string::npos) << table;
 }

@@ -42,7 +42,8 @@ struct DeviceCeilings {
   static std::string describeScattered(WorkUnit unit);
 };
 
-/// The element-wise median of `measurements` (not empty; `seconds` is their sum).
+/// The element-wise median of `measurements` (not empty). Here and below `seconds` is the sum
+/// of theirs.
 DeviceCeilings medianOf(const std::vector<DeviceCeilings>& measurements);
 /// The element-wise lowest and highest of `measurements` (not empty). The highest of the two
 /// measurements around a size and variant is its ceilings: other load on the cores only ever

@@ -66,21 +66,15 @@ std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* 
 }
 
 std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements) {
-  const DeviceCeilings median = medianOf(measurements);
-  const bool several = measurements.size() > 1;
-  const DeviceCeilings lowest = lowestOf(measurements), highest = highestOf(measurements);
-  std::string out;
-  if (several)
-    out = fmt::format("| {:<54} | {:>14} | {:>10} | {:>10} |\n|{:-<56}|{:->15}:|{:->11}:|{:->11}:|\n",
-                      fmt::format("device ceiling ({} measurements)", measurements.size()), "median per s",
-                      "lowest", "highest", "", "", "", "");
-  else
-    out = fmt::format("| {:<54} | {:>14} |\n|{:-<56}|{:->15}:|\n", "device ceiling (median of runs)",
-                      "per second", "", "");
+  const DeviceCeilings median = medianOf(measurements), lowest = lowestOf(measurements),
+                       highest = highestOf(measurements);
+  std::string out =
+      fmt::format("| {:<54} | {:>14} | {:>10} | {:>10} |\n|{:-<56}|{:->15}:|{:->11}:|{:->11}:|\n",
+                  fmt::format("device ceiling ({} measured)", measurements.size()), "median per s", "lowest",
+                  "highest", "", "", "", "");
   auto row = [&](const std::string& name, auto rate) {
-    out += several ? fmt::format("| {:<54} | {:>14} | {:>10} | {:>10} |\n", name, si(*rate(median)),
-                                 si(*rate(lowest)), si(*rate(highest)))
-                   : fmt::format("| {:<54} | {:>14} |\n", name, si(*rate(median)));
+    out += fmt::format("| {:<54} | {:>14} | {:>10} | {:>10} |\n", name, si(*rate(median)), si(*rate(lowest)),
+                       si(*rate(highest)));
   };
   for (WorkUnit u : {WorkUnit::TextureSamples, WorkUnit::BufferBytes, WorkUnit::ImageBytes,
                      WorkUnit::TransferBytes, WorkUnit::Flops}) {
@@ -89,10 +83,9 @@ std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements) {
       row(DeviceCeilings::describeScattered(u),
           [u](const DeviceCeilings& c) { return c.scatteredPerSecond(u); });
   }
-  if (several)
-    out +=
-        "each size and variant is compared with the higher of the measurements just before and after its "
-        "frames\n";
+  out +=
+      "each size and variant is compared with the higher of the measurements just before and after its "
+      "frames\n";
   return out;
 }
 

@@ -46,8 +46,8 @@ struct WorkRate {
 /// The units `pass` did work in, in WorkUnit order.
 std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* ceilings);
 
-/// "| ceiling | measured |" rows for the five ceilings; with several measurements (not
-/// empty), their median, lowest and highest.
+/// A row for each of the ceilings: the median, lowest and highest of `measurements` (not
+/// empty).
 std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements);
 /// A row per pass and unit of work: work per frame, ms, rate, ceiling, fraction (and of
 /// the scattered ceiling, for texture samples), against the column's own ceilings where it
