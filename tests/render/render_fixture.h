@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace bounce::test {
@@ -19,7 +20,17 @@ class RenderFixture : public ::testing::Test {
  protected:
   /// Creates the engine with `sets` at command-line priority and loads `scene`
   /// (absolute, or relative to the repository).
+  /// A failure here ends the test: ASSERT_* would return from start() only, and the test
+  /// body would go on with a null engine, device or renderer and crash (on a machine with
+  /// no Vulkan driver, every GPU test did).
   void start(const std::string& scene, std::vector<std::string> sets = {}, std::string technique = "none") {
+    startOrFail(scene, std::move(sets), std::move(technique));
+    if (HasFatalFailure())
+      throw std::runtime_error("the test's engine, scene or GPU device did not start (above)");
+  }
+
+ private:
+  void startOrFail(const std::string& scene, std::vector<std::string> sets, std::string technique) {
     EngineOptions o;
     o.root = BOUNCE_SOURCE_DIR;
     o.userIni = std::filesystem::path();
@@ -40,6 +51,7 @@ class RenderFixture : public ::testing::Test {
         *engine, *device, RendererOptions{std::filesystem::path(BOUNCE_BINARY_DIR) / "shader-cache"});
   }
 
+ protected:
   FrameView view(uint32_t width, uint32_t height) const {
     const Scene& s = *engine->scene();
     return FrameView::fromCamera(s.cameras().empty() ? Camera{} : s.cameras().front(), width, height);
