@@ -9,6 +9,7 @@
 
 #include <fstream>
 #include <random>
+#include <stdexcept>
 
 namespace bounce {
 namespace {
@@ -41,6 +42,10 @@ class ScratchProject {
 };
 
 EngineOptions optionsFor(const ScratchProject& p) {
+  // Without the test plugins the tests would fail on their first checks and then crash on
+  // what those plugins register: one clear error instead (gtest reports the exception).
+  if (!fs::is_directory(BOUNCE_BINARY_DIR "/test-plugins"))
+    throw std::runtime_error(BOUNCE_BINARY_DIR "/test-plugins is missing: the test plugins were not built");
   EngineOptions o;
   o.root = p.root();
   o.userIni = p.root() / "user" / "UserEngine.ini";

@@ -6,12 +6,20 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 namespace bounce {
 namespace {
 
 class PluginHostTest : public ::testing::Test {
  protected:
-  PluginHostTest() { host.discover({BOUNCE_TEST_PLUGIN_ROOT}); }
+  // Without the test plugins (a build that left them out, a copied build) every test here
+  // fails at its first line rather than dereferencing a descriptor that is not there.
+  void SetUp() override {
+    ASSERT_TRUE(std::filesystem::is_directory(BOUNCE_TEST_PLUGIN_ROOT))
+        << BOUNCE_TEST_PLUGIN_ROOT << " is missing: the test plugins were not built";
+    host.discover({BOUNCE_TEST_PLUGIN_ROOT});
+  }
 
   CVarRegistry cvars;
   Console console{cvars};
