@@ -38,7 +38,7 @@ void main() {
   int brick = int(gl_GlobalInvocationID.x);
   if (brick >= vxgiBricksPerLevel()) return;
   int i = pc.level * vxgiBricksPerLevel() + brick;
-  bool occupied = brickOccupancy[brick] != 0u;
+  bool occupied = (brickOccupancy[2 * brick] | brickOccupancy[2 * brick + 1]) != 0u;  // any voxel's bit
 #if VXGI_WHOLE_LEVEL
   // Downsampled content alone needs no resolve inside the inner box, which this frame's
   // downsample rewrites (the resolve skips every voxel of such a brick): not dispatched,

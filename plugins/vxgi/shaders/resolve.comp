@@ -12,9 +12,15 @@
 // Air over air is not stored again (VxgiVoxelStored): on lavapipe each storage-image
 // store costs per texel, and most voxels of the bricks a re-voxelization lists are air.
 //
-// VXGI_RESOLVE_BRICK_LIST 1 (a level resolved whole): one workgroup per brick of the list
+// VXGI_RESOLVE_BRICK_LIST 1 (a level resolved whole): workgroups over the bricks of the list
 // brick_list.comp made, by indirect dispatch, so the air that is already stored as zeros is
-// never dispatched. 0: every voxel of the box (boxes of a partial re-voxelization).
+// never dispatched. In a brick only the voxels whose VxgiBrickOccupancy bit is set have sums
+// to read (a wall's bricks are mostly air: 16 or 32 of 64 voxels for an axis-aligned one),
+// and only air that was stored before needs storing: the workgroup's VXGI_RESOLVE_LANES
+// lanes take those voxels in turn, a lane each, rather than a lane per voxel of the brick. On
+// lavapipe, which runs both sides of a branch under a mask, the lanes of air voxels would
+// otherwise do every voxel's loads.
+// 0: every voxel of the box (boxes of a partial re-voxelization).
 #extension GL_EXT_shader_atomic_float : require
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
@@ -23,7 +29,11 @@
 #define WORK_COUNTERS_BINDING 50
 #include "bounce/work_counters.glsl"
 
+#if VXGI_RESOLVE_BRICK_LIST
+layout(local_size_x = VXGI_RESOLVE_LANES) in;
+#else
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#endif
 
 layout(push_constant) uniform Push {
   ivec4 boxMin;   // xyz: first voxel (world voxel coordinates), w: level
@@ -37,6 +47,7 @@ layout(binding = 21, r32f) uniform image3D scratch;
 layout(std430, binding = 61) readonly buffer VxgiBrickFlags { uint brickFlags[]; };
 layout(std430, binding = 64) buffer VxgiVoxelStored { uint voxelStored[]; };
 #if VXGI_RESOLVE_BRICK_LIST
+layout(std430, binding = 60) readonly buffer VxgiBrickOccupancy { uint brickOccupancy[]; };
 layout(std430, binding = 63) readonly buffer VxgiBrickList {
   uint listedBricks;
   uint bricks[];
@@ -170,15 +181,75 @@ void resolveVoxel(ivec3 t, int level) {
 #endif
 }
 
+#if VXGI_RESOLVE_BRICK_LIST
+// Air voxel t (no sums: its scratch texels hold zeros) over which the resolve last stored
+// something, or downsampling may have outside the inner box: zeros stored, its stored bit
+// cleared.
+void storeAir(ivec3 t, int level) {
+  atomicAnd(voxelStored[vxgiVoxelStoredWord(level, t)], ~vxgiVoxelStoredBit(t));
+#if VXGI_AO_MODE
+  countWork(WORK_IMAGE_BYTES, uint(VXGI_DIRECTIONS / 3) * 4u);
+  VXGI_STORE_CLIP(voxelsOut0, t, level, 0, vec4(0.0))
+#if VXGI_DIRECTIONS == 6
+  VXGI_STORE_CLIP(voxelsOut1, t, level, 0, vec4(0.0))
+#endif
+#else
+  countWork(WORK_IMAGE_BYTES, uint(VXGI_DIRECTIONS) * (VXGI_EMITTANCE_FP16 != 0 ? 8u : 4u));
+  VXGI_STORE_CLIP(voxelsOut0, t, level, 0, vec4(0.0))
+  VXGI_STORE_CLIP(voxelsOut1, t, level, 0, vec4(0.0))
+  VXGI_STORE_CLIP(voxelsOut2, t, level, 0, vec4(0.0))
+#if VXGI_DIRECTIONS == 6
+  VXGI_STORE_CLIP(voxelsOut0, t, level, 1, vec4(0.0))
+  VXGI_STORE_CLIP(voxelsOut1, t, level, 1, vec4(0.0))
+  VXGI_STORE_CLIP(voxelsOut2, t, level, 1, vec4(0.0))
+#endif
+#endif
+}
+
+// The brick-local index (0..63) of the n-th set bit (from 0) of a brick's 64 bits: a binary
+// search over bit counts, the same five steps for every lane.
+uint nthSetBit(uvec2 bits, uint n) {
+  uint low = uint(bitCount(bits.x));
+  bool inLow = n < low;
+  uint word = inLow ? bits.x : bits.y, position = inLow ? 0u : 32u;
+  n -= inLow ? 0u : low;
+  for (uint half_ = 16u; half_ > 0u; half_ >>= 1u) {
+    uint below = uint(bitCount(word & ((1u << half_) - 1u)));
+    bool above = n >= below;
+    n -= above ? below : 0u;
+    word >>= above ? half_ : 0u;
+    position += above ? half_ : 0u;
+  }
+  return position;
+}
+#endif
+
 void main() {
   int level = pc.boxMin.w;
 #if VXGI_RESOLVE_BRICK_LIST
-  // The level is resolved whole: brick after brick of the list, one voxel per invocation.
+  // The level is resolved whole: brick after brick of the list.
+  const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
   for (int k = 0; k < pc.bricksPerGroup; ++k) {
     uint slot = gl_WorkGroupID.x * uint(pc.bricksPerGroup) + uint(k);
     if (slot >= listedBricks) return;
-    ivec3 b = vxgiBrickCoord(int(bricks[slot]));
-    resolveVoxel((b << VXGI_BRICK_SHIFT) + ivec3(gl_LocalInvocationID), level);
+    int brick = int(bricks[slot]);
+    ivec3 first = vxgiBrickCoord(brick) << VXGI_BRICK_SHIFT;
+    uvec2 withSums = uvec2(brickOccupancy[2 * brick], brickOccupancy[2 * brick + 1]);
+    int storedWord = vxgiVoxelStoredWord(level, first);  // the brick's first word
+    // Read before any lane updates them below (each lane only its own voxels' bits).
+    uvec2 stored = uvec2(voxelStored[storedWord], voxelStored[storedWord + 1]);
+    countWork(WORK_BUFFER_BYTES, lane == 0u ? 16u : 0u);  // the four words, once per brick
+    // Air to store: what the resolve stored before, and with downsampled content outside
+    // the inner box, every air voxel (zeros inside it are rewritten by the downsample, which
+    // follows: harmless).
+    bool downsampledOutside =
+        (brickFlags[level * vxgiBricksPerLevel() + brick] & VXGI_BRICK_DOWNSAMPLED) != 0u &&
+        !vxgiInnerBoxHolds(first, 4, level);
+    uvec2 air = downsampledOutside ? ~withSums : stored & ~withSums;
+    uint sums = uint(bitCount(withSums.x) + bitCount(withSums.y));
+    uint airs = uint(bitCount(air.x) + bitCount(air.y));
+    for (uint i = lane; i < sums; i += lanes) resolveVoxel(vxgiBrickVoxel(first, nthSetBit(withSums, i)), level);
+    for (uint i = lane; i < airs; i += lanes) storeAir(vxgiBrickVoxel(first, nthSetBit(air, i)), level);
   }
 #else
   ivec3 local = ivec3(gl_GlobalInvocationID);

@@ -36,7 +36,7 @@ void main() {
   if (any(lessThanEqual(overlap, vec3(0.0)))) return;
   vec3 coverage = vec3(overlap.y * overlap.z, overlap.x * overlap.z, overlap.x * overlap.y);
   ivec3 t = vxgiWrap(voxel);
-  brickOccupancy[vxgiBrickIndex(t)] = 1u;
+  atomicOr(brickOccupancy[vxgiVoxelBitWord(t)], vxgiVoxelBit(t));
   int per = pc.scratchLayout.y;
   for (int d = 0; d < VXGI_DIRECTIONS; ++d) {
     float w = coverage[d % 3];

@@ -208,7 +208,7 @@ void main() {
       }
     }
     countWork(WORK_IMAGE_BYTES, 8u * atomics);
-    // Every fragment that touches the brick stores the same 1: no atomic needed.
-    if (atomics > 0u) brickOccupancy[vxgiBrickIndex(t)] = 1u;
+    // The voxel has sums: the resolve reads only such voxels' (vxgi/scratch.glsl).
+    if (atomics > 0u) atomicOr(brickOccupancy[vxgiVoxelBitWord(t)], vxgiVoxelBit(t));
   }
 }

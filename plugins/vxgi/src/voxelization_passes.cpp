@@ -282,7 +282,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   });
 
   TextureHandle& scratchTexture = handles.scratch;
-  BufferHandle occupancy;  // VxgiBrickOccupancy: one uint per brick of the level being voxelized
+  BufferHandle
+      occupancy;  // VxgiBrickOccupancy: a bit per voxel of the level being voxelized, 2 words a brick
   BufferHandle resolveArguments, brickList;            // brick_list.comp's indirect dispatch and bricks
   BufferHandle downsampleArguments, downsampleBricks;  // downsample_list.comp's
   const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
@@ -310,7 +311,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           // cull the next level's passes, which would otherwise write after them (the
           // executor's pool reuses these buffers whichever passes used them).
           occupancy = b.createBuffer(fmt::format("VXGI.BrickOccupancy.L{}", level),
-                                     {uint64_t(bricksPerLevel) * sizeof(uint32_t)});
+                                     {uint64_t(bricksPerLevel) * 2u * sizeof(uint32_t)});
           resolveArguments =
               b.createBuffer(fmt::format("VXGI.ResolveArguments.L{}", level), {sizeof(glm::uvec4)});
           brickList = b.createBuffer(fmt::format("VXGI.BrickList.L{}", level),
@@ -477,10 +478,11 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
       TextureHandle sums = scratchTexture;
       BufferHandle constants = b.read(handles.constants, Access::Uniform);
-      BufferHandle arguments, list;
+      BufferHandle arguments, list, occupied;
       if (wholeLevel) {
         arguments = b.read(resolveArguments, Access::Indirect);
         list = b.read(brickList, Access::StorageRead);
+        occupied = b.read(occupancy, Access::StorageRead);  // which voxels have sums to read
       }
       // The downsampled bit says where air must be stored over what downsampling left.
       BufferHandle flags = b.read(handles.brickFlags, Access::StorageRead);
@@ -489,8 +491,12 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       b.condition(decideResolve);
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(
-            shader(shaders, "resolve.comp", format, "VXGI_RESOLVE_BRICK_LIST", wholeLevel ? 1 : 0));
+        gpu::ShaderSource source =
+            shader(shaders, "resolve.comp", format, "VXGI_RESOLVE_BRICK_LIST", wholeLevel ? 1 : 0);
+        // A brick's voxels with sums, a lane each: one SIMD group of lavapipe's (8 lanes)
+        // takes them in turn; a GPU's workgroup, a lane per voxel, takes a brick at once.
+        source.defines.emplace_back("VXGI_RESOLVE_LANES", cpuDevice ? "8" : "64");
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(source);
         gpu::Bindings bind;
         bind.buffer("clipMap", constants)
             .storage("scratch", sums)
@@ -499,7 +505,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         bindStorage(bind, "voxelsOut", h.clip);
         const glm::ivec4 scratchPush(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0);
         if (wholeLevel) {
-          bind.buffer("VxgiBrickList", list);
+          bind.buffer("VxgiBrickList", list).buffer("VxgiBrickOccupancy", occupied);
           ResolvePush push{glm::ivec4(0, 0, 0, int32_t(level)), glm::ivec4(0), scratchPush, storageScale,
                            int32_t(bricksPerGroup)};
           ctx.dispatchIndirect(pipeline, bind, arguments, push);

@@ -13,8 +13,9 @@ ivec3 vxgiScratchCoord(ivec3 t, int channel, int perRow) {
 
 // Bricks of 4³ voxels (kBrickVoxels in src/clip_map_textures.h), in toroidal voxel space,
 // so a brick is the same 64 texels however the level scrolls. Two per-brick buffers let a
-// re-voxelization skip the clip-map's air: VxgiBrickOccupancy (this level, this frame: a
-// fragment or the test cube added to the brick's sums) and VxgiBrickFlags (every level,
+// re-voxelization skip the clip-map's air: VxgiBrickOccupancy (this level, this frame: a bit
+// per voxel, two words per brick, set where a fragment or the test cube added to the voxel's
+// sums; vxgiVoxelBitWord below) and VxgiBrickFlags (every level,
 // persistent: 0 when all the brick's texels are known to hold zero). A flag has two bits:
 // what the resolve stored may be non-zero, and what downsampling stored (the inner box of
 // a coarser level) may be.
@@ -51,10 +52,13 @@ bool vxgiInnerBoxHolds(ivec3 first, int extent, int level) {
 // resolve last stored for the voxel may be non-zero. Air over air (the bit clear, and no
 // downsampled content in the brick) need not be stored again: most voxels of the bricks a
 // re-voxelization lists are air, and on lavapipe a storage-image store costs per texel.
-int vxgiVoxelStoredWord(int level, ivec3 t) {
-  int voxel = ((t.z & 3) << 4) | ((t.y & 3) << 2) | (t.x & 3);
-  return (level * vxgiBricksPerLevel() + vxgiBrickIndex(t)) * 2 + (voxel >> 5);
-}
-uint vxgiVoxelStoredBit(ivec3 t) { return 1u << (((t.z & 1) << 4) | ((t.y & 3) << 2) | (t.x & 3)); }
+// Voxel t is bit v % 32 of word v / 32 of its brick's two, v = x + 4y + 16z in brick-local
+// coordinates (vxgiBrickVoxel's inverse). VxgiBrickOccupancy uses the same bits.
+int vxgiVoxelBitWord(ivec3 t) { return vxgiBrickIndex(t) * 2 + ((t.z >> 1) & 1); }
+uint vxgiVoxelBit(ivec3 t) { return 1u << (((t.z & 1) << 4) | ((t.y & 3) << 2) | (t.x & 3)); }
+// Brick-local voxel v (0..63) of the brick whose first voxel is `first`.
+ivec3 vxgiBrickVoxel(ivec3 first, uint v) { return first + ivec3(v & 3u, (v >> 2) & 3u, v >> 4); }
+int vxgiVoxelStoredWord(int level, ivec3 t) { return level * vxgiBricksPerLevel() * 2 + vxgiVoxelBitWord(t); }
+uint vxgiVoxelStoredBit(ivec3 t) { return vxgiVoxelBit(t); }
 
 #endif
