@@ -19,7 +19,12 @@
 #define WORK_COUNTERS_BINDING 50
 #include "bounce/work_counters.glsl"
 
+#if VXGI_DOWNSAMPLE_MODE == 0
+// Mode 0 hands a brick's voxels to its lanes in turn (main below).
+layout(local_size_x = VXGI_DOWNSAMPLE_LANES) in;
+#else
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+#endif
 
 layout(push_constant) uniform Push {
   ivec4 dstMin;   // mode 0: first voxel (world voxels of the destination level), w: level; else x: the
@@ -127,13 +132,20 @@ bool storedSomething = false;
   }
 #if VXGI_DOWNSAMPLE_MODE == 0
 // Mode 0 runs over the bricks of the inner box downsample_list.comp listed (by indirect
-// dispatch, one brick per workgroup), and flags those it stores something in.
+// dispatch, pc.dstSize.w bricks per workgroup), and flags those it stores something in. In a
+// brick only the voxels whose children may hold something are downsampled (a wall's bricks
+// are mostly air); the others are stored as zeros, without their 48 loads. Which children may
+// hold something: those the resolve last stored something in (VxgiVoxelStored, per voxel),
+// and every voxel of a finer brick that holds downsampled content (VxgiBrickFlags, per brick).
 #include "vxgi/scratch.glsl"
 layout(std430, binding = 61) buffer VxgiBrickFlags { uint brickFlags[]; };
 layout(std430, binding = 63) readonly buffer VxgiDownsampleBricks {
   uint listedBricks;
   uint bricks[];
 };
+layout(std430, binding = 64) readonly buffer VxgiVoxelStored { uint voxelStored[]; };
+// The brick's voxels to downsample (0, 1) and to store as zeros (2, 3), 64 bits each.
+shared uint brickVoxels[4];
 #define STORE_TEXEL(image, sign, local, v) VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, v)
 #else
 // Modes 1 and 2 run over the 4³ blocks of the mip mip_list.comp listed (by indirect
@@ -217,17 +229,69 @@ void downsampleBlock(uint slot, int size) {
 }
 #endif
 
+#if VXGI_DOWNSAMPLE_MODE == 0
+// Whether any child of output voxel `local` (world voxels 2·v .. 2·v + 1 of the finer level,
+// one 2³ block of one finer brick) may be non-zero.
+bool childrenMayHoldSomething(ivec3 local) {
+  int finer = pc.dstMin.w - 1;
+  ivec3 t = vxgiWrap(2 * (pc.dstMin.xyz + local));  // the block's first child, toroidal
+  if ((brickFlags[finer * vxgiBricksPerLevel() + vxgiBrickIndex(t)] & VXGI_BRICK_DOWNSAMPLED) != 0u) return true;
+  // The block's eight bits: x and x + 1, y and y + 1 in both halves (z and z + 1) of one word.
+  uint block = 0x00330033u << (((t.y & 3) << 2) | (t.x & 3));
+  countWork(WORK_BUFFER_BYTES, 8u);  // the flag and the stored word
+  return (voxelStored[vxgiVoxelStoredWord(finer, t)] & block) != 0u;
+}
+
+// Output voxel `local` over children that all hold zeros: zeros, as downsampleVoxel would
+// store (and no flag).
+void storeZeros(ivec3 local) {
+#if VXGI_AO_MODE
+  countWork(WORK_IMAGE_BYTES, uint(VXGI_DIRECTIONS / 3) * 4u);
+  STORE_TEXEL(voxelsDst0, 0, local, vec4(0.0))
+#if VXGI_DIRECTIONS == 6
+  STORE_TEXEL(voxelsDst1, 0, local, vec4(0.0))
+#endif
+#else
+  countWork(WORK_IMAGE_BYTES, uint(VXGI_DIRECTIONS) * (VXGI_EMITTANCE_FP16 != 0 ? 8u : 4u));
+  STORE_TEXEL(voxelsDst0, 0, local, vec4(0.0))
+  STORE_TEXEL(voxelsDst1, 0, local, vec4(0.0))
+  STORE_TEXEL(voxelsDst2, 0, local, vec4(0.0))
+#if VXGI_DIRECTIONS == 6
+  STORE_TEXEL(voxelsDst0, NEGATIVE, local, vec4(0.0))
+  STORE_TEXEL(voxelsDst1, NEGATIVE, local, vec4(0.0))
+  STORE_TEXEL(voxelsDst2, NEGATIVE, local, vec4(0.0))
+#endif
+#endif
+}
+#endif
+
 void main() {
 #if VXGI_DOWNSAMPLE_MODE == 0
+  const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
+  // The same count for the whole workgroup (it depends on the workgroup alone): the barriers
+  // below stay in uniform control flow.
   for (int k = 0; k < pc.dstSize.w; ++k) {
     uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
     if (slot >= listedBricks) return;
     uint packed = bricks[slot];
     ivec3 rel = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
-    ivec3 voxel = (((pc.dstMin.xyz >> VXGI_BRICK_SHIFT) + rel) << VXGI_BRICK_SHIFT) + ivec3(gl_LocalInvocationID);
-    ivec3 local = voxel - pc.dstMin.xyz;
-    // The brick may reach past the inner box, whose bounds need not be brick-aligned.
-    if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, pc.dstSize.xyz))) downsampleVoxel(local);
+    ivec3 first = (((pc.dstMin.xyz >> VXGI_BRICK_SHIFT) + rel) << VXGI_BRICK_SHIFT) - pc.dstMin.xyz;  // local
+    if (lane < 4u) brickVoxels[lane] = 0u;
+    barrier();
+    // Sort the brick's voxels, a lane each; the brick may reach past the inner box, whose
+    // bounds need not be brick-aligned: those voxels are neither.
+    for (uint v = lane; v < 64u; v += lanes) {
+      ivec3 local = vxgiBrickVoxel(first, v);
+      if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, pc.dstSize.xyz)))
+        atomicOr(brickVoxels[(childrenMayHoldSomething(local) ? 0u : 2u) + (v >> 5)], 1u << (v & 31u));
+    }
+    barrier();
+    uvec2 downsampled = uvec2(brickVoxels[0], brickVoxels[1]), zeros = uvec2(brickVoxels[2], brickVoxels[3]);
+    uint toDownsample = uint(bitCount(downsampled.x) + bitCount(downsampled.y));
+    uint toZero = uint(bitCount(zeros.x) + bitCount(zeros.y));
+    for (uint i = lane; i < toDownsample; i += lanes) downsampleVoxel(vxgiBrickVoxel(first, vxgiNthSetBit(downsampled, i)));
+    for (uint i = lane; i < toZero; i += lanes) storeZeros(vxgiBrickVoxel(first, vxgiNthSetBit(zeros, i)));
+    barrier();  // every lane has read brickVoxels before the next brick clears it
   }
 #elif VXGI_DOWNSAMPLE_MODE != 3
   dstMip = pc.dstMin.y;

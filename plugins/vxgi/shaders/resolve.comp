@@ -205,23 +205,6 @@ void storeAir(ivec3 t, int level) {
 #endif
 #endif
 }
-
-// The brick-local index (0..63) of the n-th set bit (from 0) of a brick's 64 bits: a binary
-// search over bit counts, the same five steps for every lane.
-uint nthSetBit(uvec2 bits, uint n) {
-  uint low = uint(bitCount(bits.x));
-  bool inLow = n < low;
-  uint word = inLow ? bits.x : bits.y, position = inLow ? 0u : 32u;
-  n -= inLow ? 0u : low;
-  for (uint half_ = 16u; half_ > 0u; half_ >>= 1u) {
-    uint below = uint(bitCount(word & ((1u << half_) - 1u)));
-    bool above = n >= below;
-    n -= above ? below : 0u;
-    word >>= above ? half_ : 0u;
-    position += above ? half_ : 0u;
-  }
-  return position;
-}
 #endif
 
 void main() {
@@ -248,8 +231,8 @@ void main() {
     uvec2 air = downsampledOutside ? ~withSums : stored & ~withSums;
     uint sums = uint(bitCount(withSums.x) + bitCount(withSums.y));
     uint airs = uint(bitCount(air.x) + bitCount(air.y));
-    for (uint i = lane; i < sums; i += lanes) resolveVoxel(vxgiBrickVoxel(first, nthSetBit(withSums, i)), level);
-    for (uint i = lane; i < airs; i += lanes) storeAir(vxgiBrickVoxel(first, nthSetBit(air, i)), level);
+    for (uint i = lane; i < sums; i += lanes) resolveVoxel(vxgiBrickVoxel(first, vxgiNthSetBit(withSums, i)), level);
+    for (uint i = lane; i < airs; i += lanes) storeAir(vxgiBrickVoxel(first, vxgiNthSetBit(air, i)), level);
   }
 #else
   ivec3 local = ivec3(gl_GlobalInvocationID);

@@ -559,16 +559,22 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       BufferHandle list = b.read(downsampleBricks, Access::StorageRead);
       writeAll(b, handles.clip);
       handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
+      BufferHandle stored =
+          b.read(handles.voxelStored, Access::StorageRead);  // which children hold something
       b.condition([work, reason] {
         return work ? PassDecision::run("the finer level changed") : PassDecision::skip(reason);
       });
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(shaders, format, 0));
+        gpu::ShaderSource source = downsampleShader(shaders, format, 0);
+        // A brick's voxels, a lane each: lavapipe's SIMD group (8 lanes) takes them in turn.
+        source.defines.emplace_back("VXGI_DOWNSAMPLE_LANES", cpuDevice ? "8" : "64");
+        const gpu::Pipeline& pipeline = ctx.pipelines().compute(source);
         gpu::Bindings bind;
         bind.buffer("clipMap", constants)
             .buffer("VxgiBrickFlags", h.brickFlags)
-            .buffer("VxgiDownsampleBricks", list);
+            .buffer("VxgiDownsampleBricks", list)
+            .buffer("VxgiVoxelStored", stored);
         // Source and destination are the same textures, different levels of the stack.
         bindStorage(bind, "voxelsSrc", h.clip);
         bindStorage(bind, "voxelsDst", h.clip);

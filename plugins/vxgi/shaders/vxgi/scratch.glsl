@@ -58,6 +58,22 @@ int vxgiVoxelBitWord(ivec3 t) { return vxgiBrickIndex(t) * 2 + ((t.z >> 1) & 1);
 uint vxgiVoxelBit(ivec3 t) { return 1u << (((t.z & 1) << 4) | ((t.y & 3) << 2) | (t.x & 3)); }
 // Brick-local voxel v (0..63) of the brick whose first voxel is `first`.
 ivec3 vxgiBrickVoxel(ivec3 first, uint v) { return first + ivec3(v & 3u, (v >> 2) & 3u, v >> 4); }
+// The brick-local index (0..63) of the n-th set bit (from 0) of a brick's 64 bits: a binary
+// search over bit counts, the same five steps for every lane.
+uint vxgiNthSetBit(uvec2 bits, uint n) {
+  uint low = uint(bitCount(bits.x));
+  bool inLow = n < low;
+  uint word = inLow ? bits.x : bits.y, position = inLow ? 0u : 32u;
+  n -= inLow ? 0u : low;
+  for (uint half_ = 16u; half_ > 0u; half_ >>= 1u) {
+    uint below = uint(bitCount(word & ((1u << half_) - 1u)));
+    bool above = n >= below;
+    n -= above ? below : 0u;
+    word >>= above ? half_ : 0u;
+    position += above ? half_ : 0u;
+  }
+  return position;
+}
 int vxgiVoxelStoredWord(int level, ivec3 t) { return level * vxgiBricksPerLevel() * 2 + vxgiVoxelBitWord(t); }
 uint vxgiVoxelStoredBit(ivec3 t) { return vxgiVoxelBit(t); }
 
