@@ -19,10 +19,12 @@
 #define WORK_COUNTERS_BINDING 50
 #include "bounce/work_counters.glsl"
 
-#if VXGI_DOWNSAMPLE_MODE == 0
-// Mode 0 hands a brick's voxels to its lanes in turn (main below).
+#if VXGI_DOWNSAMPLE_MODE <= 1
+// Modes 0 and 1 hand a brick's (or block's) voxels to the lanes in turn (main below).
+#define VXGI_SORTS_VOXELS 1
 layout(local_size_x = VXGI_DOWNSAMPLE_LANES) in;
 #else
+#define VXGI_SORTS_VOXELS 0
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #endif
 
@@ -144,8 +146,6 @@ layout(std430, binding = 63) readonly buffer VxgiDownsampleBricks {
   uint bricks[];
 };
 layout(std430, binding = 64) readonly buffer VxgiVoxelStored { uint voxelStored[]; };
-// The brick's voxels to downsample (0, 1) and to store as zeros (2, 3), 64 bits each.
-shared uint brickVoxels[4];
 #define STORE_TEXEL(image, sign, local, v) VXGI_STORE_CLIP(image, vxgiWrap(pc.dstMin.xyz + local), pc.dstMin.w, sign, v)
 #else
 // Modes 1 and 2 run over the 4³ blocks of the mip mip_list.comp listed (by indirect
@@ -158,6 +158,17 @@ layout(std430, binding = 63) readonly buffer VxgiMipBlocks {
   uint blocks[];         // this mip's from dstBlocks: x | y << 8 | z << 16
 };
 #define STORE_TEXEL(image, sign, local, v) imageStore(image, vxgiMipTexel(local, dstMip, sign), v);
+#if VXGI_DOWNSAMPLE_MODE == 1
+// Mode 1's children are the coarsest clipped level's voxels: which may hold something, as for
+// mode 0 (below).
+#include "vxgi/scratch.glsl"
+layout(std430, binding = 61) readonly buffer VxgiBrickFlags { uint brickFlags[]; };
+layout(std430, binding = 65) readonly buffer VxgiVoxelStored { uint voxelStored[]; };
+#endif
+#endif
+#if VXGI_SORTS_VOXELS
+// The brick's (block's) voxels to downsample (0, 1) and to store as zeros (2, 3), 64 bits each.
+shared uint brickVoxels[4];
 #endif
 
 #if VXGI_AO_MODE
@@ -216,7 +227,7 @@ void downsampleVoxel(ivec3 local) {
 #endif
 }
 
-#if VXGI_DOWNSAMPLE_MODE != 0
+#if VXGI_DOWNSAMPLE_MODE >= 2
 // Listed block `slot` of mip dstMip, whose voxels per side are `size`.
 void downsampleBlock(uint slot, int size) {
   int perAxis = (size + 3) / 4;
@@ -229,17 +240,43 @@ void downsampleBlock(uint slot, int size) {
 }
 #endif
 
-#if VXGI_DOWNSAMPLE_MODE == 0
-// Whether any child of output voxel `local` (world voxels 2·v .. 2·v + 1 of the finer level,
-// one 2³ block of one finer brick) may be non-zero.
+#if VXGI_SORTS_VOXELS
+// Whether any child of output voxel `local` may be non-zero. Its children are one 2³ block of
+// one finer brick: voxels 2·v .. 2·v + 1. (The pyramid's mips 1 and up, mode 2, keep a flag
+// per block only, and no test reads them: they downsample every voxel of a listed block.)
 bool childrenMayHoldSomething(ivec3 local) {
+#if VXGI_DOWNSAMPLE_MODE == 0
   int finer = pc.dstMin.w - 1;
   ivec3 t = vxgiWrap(2 * (pc.dstMin.xyz + local));  // the block's first child, toroidal
+#else
+  int finer = clipMap.levelCount - 1;
+  ivec3 t = 2 * local;  // toroidal already
+#endif
+  // What downsampling stored in the finer brick is flagged per brick only; what the
+  // resolve stored, per voxel.
+  countWork(WORK_BUFFER_BYTES, 4u);  // the flag
   if ((brickFlags[finer * vxgiBricksPerLevel() + vxgiBrickIndex(t)] & VXGI_BRICK_DOWNSAMPLED) != 0u) return true;
   // The block's eight bits: x and x + 1, y and y + 1 in both halves (z and z + 1) of one word.
   uint block = 0x00330033u << (((t.y & 3) << 2) | (t.x & 3));
-  countWork(WORK_BUFFER_BYTES, 8u);  // the flag and the stored word
+  countWork(WORK_BUFFER_BYTES, 4u);  // the stored word
   return (voxelStored[vxgiVoxelStoredWord(finer, t)] & block) != 0u;
+}
+
+// Sorts the voxels of the brick or block whose first voxel is `first` (output voxels,
+// `size` per side of the output) into brickVoxels, a lane each: those whose children may hold
+// something, and the rest. Voxels outside the output (a brick reaching past the inner box,
+// whose bounds need not be brick-aligned; a mip under 4 voxels) are neither. Uniform control
+// flow: every lane of the workgroup calls it.
+void sortBrickVoxels(ivec3 first, ivec3 size) {
+  const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
+  if (lane < 4u) brickVoxels[lane] = 0u;
+  barrier();
+  for (uint v = lane; v < 64u; v += lanes) {
+    ivec3 local = vxgiBrickVoxel(first, v);
+    if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, size)))
+      atomicOr(brickVoxels[(childrenMayHoldSomething(local) ? 0u : 2u) + (v >> 5)], 1u << (v & 31u));
+  }
+  barrier();
 }
 
 // Output voxel `local` over children that all hold zeros: zeros, as downsampleVoxel would
@@ -276,16 +313,7 @@ void main() {
     uint packed = bricks[slot];
     ivec3 rel = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
     ivec3 first = (((pc.dstMin.xyz >> VXGI_BRICK_SHIFT) + rel) << VXGI_BRICK_SHIFT) - pc.dstMin.xyz;  // local
-    if (lane < 4u) brickVoxels[lane] = 0u;
-    barrier();
-    // Sort the brick's voxels, a lane each; the brick may reach past the inner box, whose
-    // bounds need not be brick-aligned: those voxels are neither.
-    for (uint v = lane; v < 64u; v += lanes) {
-      ivec3 local = vxgiBrickVoxel(first, v);
-      if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, pc.dstSize.xyz)))
-        atomicOr(brickVoxels[(childrenMayHoldSomething(local) ? 0u : 2u) + (v >> 5)], 1u << (v & 31u));
-    }
-    barrier();
+    sortBrickVoxels(first, pc.dstSize.xyz);
     uvec2 downsampled = uvec2(brickVoxels[0], brickVoxels[1]), zeros = uvec2(brickVoxels[2], brickVoxels[3]);
     uint toDownsample = uint(bitCount(downsampled.x) + bitCount(downsampled.y));
     uint toZero = uint(bitCount(zeros.x) + bitCount(zeros.y));
@@ -293,7 +321,31 @@ void main() {
     for (uint i = lane; i < toZero; i += lanes) storeZeros(vxgiBrickVoxel(first, vxgiNthSetBit(zeros, i)));
     barrier();  // every lane has read brickVoxels before the next brick clears it
   }
-#elif VXGI_DOWNSAMPLE_MODE != 3
+#elif VXGI_DOWNSAMPLE_MODE == 1
+  dstMip = pc.dstMin.y;
+  dstBlocks = pc.dstMin.x;
+  const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
+  int size = pc.dstSize.x, perAxis = (size + 3) / 4;
+  // The same count for the whole workgroup: the barriers stay in uniform control flow.
+  for (int k = 0; k < pc.dstSize.w; ++k) {
+    uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
+    if (slot >= listedBlocks[dstMip]) return;
+    uint packed = blocks[dstBlocks + int(slot)];
+    ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
+    ivec3 first = block << 2;
+    sortBrickVoxels(first, ivec3(size));
+    uvec2 downsampled = uvec2(brickVoxels[0], brickVoxels[1]), zeros = uvec2(brickVoxels[2], brickVoxels[3]);
+    uint toDownsample = uint(bitCount(downsampled.x) + bitCount(downsampled.y));
+    uint toZero = uint(bitCount(zeros.x) + bitCount(zeros.y));
+    uint flag = uint(dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x);
+    for (uint i = lane; i < toDownsample; i += lanes) {
+      downsampleVoxel(vxgiBrickVoxel(first, vxgiNthSetBit(downsampled, i)));
+      if (storedSomething) atomicOr(mipFlags[flag], 1u);
+    }
+    for (uint i = lane; i < toZero; i += lanes) storeZeros(vxgiBrickVoxel(first, vxgiNthSetBit(zeros, i)));
+    barrier();  // every lane has read brickVoxels before the next block clears it
+  }
+#elif VXGI_DOWNSAMPLE_MODE == 2
   dstMip = pc.dstMin.y;
   dstBlocks = pc.dstMin.x;
   for (int k = 0; k < pc.dstSize.w; ++k) {

@@ -46,10 +46,15 @@ uint32_t bricksPerListGroup(uint32_t mostListed, uint32_t least) {
 }
 
 // downsample.comp for one of its modes: 0 clipped level → the next one's inner box, 1 the
-// coarsest clipped level → mip 0, 2 mip → mip (each mode reads and writes other layouts).
+// coarsest clipped level → mip 0, 2 mip → mip (each mode reads and writes other layouts), 3
+// the pyramid's tail. Modes 0 and 1 hand a brick's voxels to the lanes in turn: one SIMD group
+// of lavapipe's (8 lanes) takes them one after another; a GPU's workgroup, a lane per voxel,
+// takes a brick at once.
 gpu::ShaderSource downsampleShader(const std::filesystem::path& shaders, const ClipMapFormat& format,
-                                   int mode) {
-  return shader(shaders, "downsample.comp", format, "VXGI_DOWNSAMPLE_MODE", mode);
+                                   int mode, bool cpuDevice) {
+  gpu::ShaderSource s = shader(shaders, "downsample.comp", format, "VXGI_DOWNSAMPLE_MODE", mode);
+  s.defines.emplace_back("VXGI_DOWNSAMPLE_LANES", cpuDevice ? "8" : "64");
+  return s;
 }
 
 // The guard copies of one clip-map texture (VXGI.ClipGuards): per axis (Z, Y, X) the
@@ -566,10 +571,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       });
       const ClipMapHandles h = handles;
       return [=](PassContext& ctx) {
-        gpu::ShaderSource source = downsampleShader(shaders, format, 0);
-        // A brick's voxels, a lane each: lavapipe's SIMD group (8 lanes) takes them in turn.
-        source.defines.emplace_back("VXGI_DOWNSAMPLE_LANES", cpuDevice ? "8" : "64");
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(source);
+        const gpu::Pipeline& pipeline =
+            ctx.pipelines().compute(downsampleShader(shaders, format, 0, cpuDevice));
         gpu::Bindings bind;
         bind.buffer("clipMap", constants)
             .buffer("VxgiBrickFlags", h.brickFlags)
@@ -646,34 +649,39 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     BufferHandle arguments = b.read(mipArguments, Access::Indirect);
     BufferHandle list = b.read(mipBlocks, Access::StorageRead);
     handles.mipFlags = b.write(handles.mipFlags, Access::StorageReadWrite);
+    // Which of the coarsest level's voxels may hold something (mip 0's children).
+    BufferHandle brickFlags = b.read(handles.brickFlags, Access::StorageRead);
+    BufferHandle stored = b.read(handles.voxelStored, Access::StorageRead);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     const ClipMapHandles h = handles;
     return [=](PassContext& ctx) {
-      const auto bindings = [&] {
+      const auto bindings = [&](int mode) {
         gpu::Bindings bind;
         bind.buffer("clipMap", constants);
         bindStorage(bind, "voxelsSrc", h.clip);
         bindStorage(bind, "voxelsDst", h.clip);
         bind.buffer("VxgiMipFlags", h.mipFlags).buffer("VxgiMipBlocks", list);
+        if (mode == 1) bind.buffer("VxgiBrickFlags", brickFlags).buffer("VxgiVoxelStored", stored);
         return bind;
       };
       uint32_t size = format.mapSize / 2;
       for (uint32_t mip = 0; mip < tail; ++mip, size /= 2) {
         const gpu::Pipeline& pipeline =
-            ctx.pipelines().compute(downsampleShader(shaders, format, mip == 0 ? 1 : 2));
+            ctx.pipelines().compute(downsampleShader(shaders, format, mip == 0 ? 1 : 2, cpuDevice));
         // x: the mip's first block in the flags and the list, y: the mip.
         DownsamplePush push{glm::ivec4(int32_t(flagOffsets[mip]), int32_t(mip), 0, 0),
                             glm::ivec4(glm::ivec3(int32_t(size)), int32_t(blocksPerGroup))};
-        ctx.dispatchIndirect(pipeline, bindings(), arguments, push, mip * sizeof(glm::uvec4));
+        ctx.dispatchIndirect(pipeline, bindings(mip == 0 ? 1 : 2), arguments, push, mip * sizeof(glm::uvec4));
         // The next mip reads what this one wrote.
         for (TextureHandle t : h.clip)
           gpu::computeWriteBarrier(ctx.cmd(), ctx.image(t), gpu::ImageRange::all(), ctx.layout(t));
       }
       // The tail: one workgroup, each mip from the one before.
-      const gpu::Pipeline& pipeline = ctx.pipelines().compute(downsampleShader(shaders, format, 3));
+      const gpu::Pipeline& pipeline =
+          ctx.pipelines().compute(downsampleShader(shaders, format, 3, cpuDevice));
       DownsamplePush push{glm::ivec4(int32_t(flagOffsets[tail]), int32_t(tail), int32_t(mips - tail), 0),
                           glm::ivec4(0)};
-      ctx.dispatchThreads(pipeline, bindings(), glm::uvec3(kBrickVoxels), push);
+      ctx.dispatchThreads(pipeline, bindings(3), glm::uvec3(kBrickVoxels), push);
     };
   });
 
