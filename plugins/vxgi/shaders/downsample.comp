@@ -300,13 +300,30 @@ void storeZeros(ivec3 local) {
 #endif
 #endif
 }
+
+// Downsamples the voxels of the brick or block at `first` that sortBrickVoxels marked, a lane
+// each in turn, and stores zeros over the rest; whether this lane stored anything non-zero.
+// Uniform control flow (barrier): every lane of the workgroup calls it.
+bool downsampleSortedVoxels(ivec3 first) {
+  const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
+  uvec2 downsampled = uvec2(brickVoxels[0], brickVoxels[1]), zeros = uvec2(brickVoxels[2], brickVoxels[3]);
+  uint toDownsample = uint(bitCount(downsampled.x) + bitCount(downsampled.y));
+  uint toZero = uint(bitCount(zeros.x) + bitCount(zeros.y));
+  barrier();  // every lane has read brickVoxels before the next brick clears it
+  bool stored = false;
+  for (uint i = lane; i < toDownsample; i += lanes) {
+    downsampleVoxel(vxgiBrickVoxel(first, vxgiNthSetBit(downsampled, i)));
+    stored = stored || storedSomething;
+  }
+  for (uint i = lane; i < toZero; i += lanes) storeZeros(vxgiBrickVoxel(first, vxgiNthSetBit(zeros, i)));
+  return stored;
+}
 #endif
 
 void main() {
 #if VXGI_DOWNSAMPLE_MODE == 0
-  const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
-  // The same count for the whole workgroup (it depends on the workgroup alone): the barriers
-  // below stay in uniform control flow.
+  // The bricks' count is the same for the whole workgroup (it depends on the workgroup
+  // alone): the barriers stay in uniform control flow. downsampleVoxel flags the brick.
   for (int k = 0; k < pc.dstSize.w; ++k) {
     uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
     if (slot >= listedBricks) return;
@@ -314,36 +331,20 @@ void main() {
     ivec3 rel = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
     ivec3 first = (((pc.dstMin.xyz >> VXGI_BRICK_SHIFT) + rel) << VXGI_BRICK_SHIFT) - pc.dstMin.xyz;  // local
     sortBrickVoxels(first, pc.dstSize.xyz);
-    uvec2 downsampled = uvec2(brickVoxels[0], brickVoxels[1]), zeros = uvec2(brickVoxels[2], brickVoxels[3]);
-    uint toDownsample = uint(bitCount(downsampled.x) + bitCount(downsampled.y));
-    uint toZero = uint(bitCount(zeros.x) + bitCount(zeros.y));
-    for (uint i = lane; i < toDownsample; i += lanes) downsampleVoxel(vxgiBrickVoxel(first, vxgiNthSetBit(downsampled, i)));
-    for (uint i = lane; i < toZero; i += lanes) storeZeros(vxgiBrickVoxel(first, vxgiNthSetBit(zeros, i)));
-    barrier();  // every lane has read brickVoxels before the next brick clears it
+    downsampleSortedVoxels(first);
   }
 #elif VXGI_DOWNSAMPLE_MODE == 1
   dstMip = pc.dstMin.y;
   dstBlocks = pc.dstMin.x;
-  const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
   int size = pc.dstSize.x, perAxis = (size + 3) / 4;
-  // The same count for the whole workgroup: the barriers stay in uniform control flow.
-  for (int k = 0; k < pc.dstSize.w; ++k) {
+  for (int k = 0; k < pc.dstSize.w; ++k) {  // as in mode 0
     uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
     if (slot >= listedBlocks[dstMip]) return;
     uint packed = blocks[dstBlocks + int(slot)];
     ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
-    ivec3 first = block << 2;
-    sortBrickVoxels(first, ivec3(size));
-    uvec2 downsampled = uvec2(brickVoxels[0], brickVoxels[1]), zeros = uvec2(brickVoxels[2], brickVoxels[3]);
-    uint toDownsample = uint(bitCount(downsampled.x) + bitCount(downsampled.y));
-    uint toZero = uint(bitCount(zeros.x) + bitCount(zeros.y));
-    uint flag = uint(dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x);
-    for (uint i = lane; i < toDownsample; i += lanes) {
-      downsampleVoxel(vxgiBrickVoxel(first, vxgiNthSetBit(downsampled, i)));
-      if (storedSomething) atomicOr(mipFlags[flag], 1u);
-    }
-    for (uint i = lane; i < toZero; i += lanes) storeZeros(vxgiBrickVoxel(first, vxgiNthSetBit(zeros, i)));
-    barrier();  // every lane has read brickVoxels before the next block clears it
+    sortBrickVoxels(block << 2, ivec3(size));
+    if (downsampleSortedVoxels(block << 2))
+      atomicOr(mipFlags[dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
   }
 #elif VXGI_DOWNSAMPLE_MODE == 2
   dstMip = pc.dstMin.y;

@@ -221,7 +221,7 @@ void main() {
     int storedWord = vxgiVoxelStoredWord(level, first);  // the brick's first word
     // Read before any lane updates them below (each lane only its own voxels' bits).
     uvec2 stored = uvec2(voxelStored[storedWord], voxelStored[storedWord + 1]);
-    countWork(WORK_BUFFER_BYTES, lane == 0u ? 16u : 0u);  // the four words, once per brick
+    countWork(WORK_BUFFER_BYTES, lane == 0u ? 20u : 0u);  // the five words, once per brick
     // Air to store: what the resolve stored before, and with downsampled content outside
     // the inner box, every air voxel (zeros inside it are rewritten by the downsample, which
     // follows: harmless).
