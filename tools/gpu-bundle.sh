@@ -5,7 +5,7 @@
 # link (the Vulkan loader and glvnd too: a vendor ICD such as libGLX_nvidia needs
 # libGLdispatch), the validation layer, and glibc as a fallback for an older system.
 #
-#   bash tools/gpu-bundle.sh [DIR]     # default DIR: .gpu (git-ignored locally)
+#   bash tools/gpu-bundle.sh [DIR]     # default DIR: .gpu (git-ignored)
 #   then, on the GPU machine, in a checkout of the same commit:
 #   bash DIR/gpu-check.sh OUT          # OUT: where the logs and images go
 #
