@@ -2,7 +2,9 @@
 // Debug modes 2 (opacity) and 3 (emittance): ray-marched views of the voxel textures,
 // as in the seed's Cornell box pictures. Each pixel's ray walks the chosen level (or,
 // with level −1, the finest level at each point) half a voxel at a time and shows the
-// first voxel whose opacity passes 5%: grey by opacity, or its emitted radiance.
+// first voxel whose opacity passes 5%: grey by opacity, or its emitted radiance. Levels
+// past the coarsest clipped one are the mips of its pyramid (storage level k: mip
+// k − levelCount, vxgi/clip_map.glsl), over the coarsest level's extent.
 #include "bounce/common.glsl"
 #include "bounce/color.glsl"
 #include "vxgi/clip_map.glsl"
@@ -17,11 +19,19 @@ layout(push_constant) uniform Push {
 layout(binding = 23, rgba8) uniform writeonly image2D outView;
 
 vec4 fetchVoxel(vec3 p, int level, out bool inside) {
-  ivec3 c = ivec3(floor(p / vxgiVoxelSize(level)));
-  ivec3 local = c - clipMap.levelOrigin[level].xyz;
+  int clipped = min(level, clipMap.levelCount - 1);  // a mip covers the coarsest level's extent
+  ivec3 local = ivec3(floor(p / vxgiVoxelSize(clipped))) - clipMap.levelOrigin[clipped].xyz;
   inside = all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, ivec3(clipMap.mapSize)));
-  ivec3 t = vxgiStorageTexel(vxgiWrap(c), level, 0);
-  ivec3 tNegative = vxgiStorageTexel(vxgiWrap(c), level, VXGI_SIGNS - 1);  // sign 1 where stacked
+  ivec3 c = ivec3(floor(p / vxgiVoxelSize(level)));
+  ivec3 t, tNegative;  // tNegative: sign 1 where stacked
+  if (level < clipMap.levelCount) {
+    t = vxgiStorageTexel(vxgiWrap(c), level, 0);
+    tNegative = vxgiStorageTexel(vxgiWrap(c), level, VXGI_SIGNS - 1);
+  } else {
+    int mip = level - clipMap.levelCount;  // toroidal, as the coarsest level: vxgiStackCoord
+    t = vxgiMipTexel(c & ivec3(vxgiMipSize(mip) - 1), mip, 0);
+    tNegative = vxgiMipTexel(c & ivec3(vxgiMipSize(mip) - 1), mip, VXGI_SIGNS - 1);
+  }
   float density = 0.0;
   vec3 e = vec3(0.0);
 #if VXGI_AO_MODE
@@ -62,7 +72,7 @@ void main() {
   int fixedLevel = pc.params.w;
   vec3 color = vec3(0.0);
   float t = 0.0;
-  int level = fixedLevel >= 0 ? min(fixedLevel, clipMap.levelCount - 1) : 0;
+  int level = fixedLevel >= 0 ? min(fixedLevel, vxgiStorageLevels() - 1) : 0;
   for (int i = 0; i < 2048; ++i) {
     vec3 p = pc.cameraPosition.xyz + dir * t;
     if (fixedLevel < 0) {

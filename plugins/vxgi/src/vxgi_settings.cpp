@@ -264,9 +264,11 @@ void VxgiSettings::declare(PluginContext& ctx) {
   debugLevel =
       ctx.addCVar<int32_t>({.name = "r.VXGI.DebugLevel",
                             .defaultValue = -1,
-                            .help = "Clip-map level the voxel views show; -1 the finest at each point.",
+                            .help = "Clip-map level the voxel views show; -1 the finest at each point. Past "
+                                    "the coarsest level (r.VXGI.StackLevels - 1), the mips of its pyramid: "
+                                    "StackLevels + m shows mip m (levels past the last mip show the last).",
                             .min = -1,
-                            .max = 4,
+                            .max = 15,
                             .category = debug});
   debugExposure = ctx.addCVar<float>({.name = "r.VXGI.DebugExposure",
                                       .defaultValue = 1.0f,

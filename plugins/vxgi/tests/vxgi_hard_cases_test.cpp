@@ -95,6 +95,44 @@ TEST_F(VxgiHardCases, TestCubeIsOpaqueThenQuarterThenSixteenthAtCoarserLevels) {
   }
 }
 
+TEST_F(VxgiHardCases, TestCubeIsAQuarterThenASixteenthInThePyramid) {
+  // The same downsampling past the clipped levels: a cube the size of one voxel of the
+  // coarsest level (0.5 m with 3 levels from 0.125 m), aligned with the voxels of the
+  // pyramid's mips 0 and 1 (1 m and 2 m: [0, 2) × [0, 2) × [0, 2) holds it), is opaque at
+  // that level, 25% at mip 0 and 6.25% at mip 1 (r.VXGI.DebugLevel 3 and 4), radiance 1.
+  // Mip 0 comes from the coarsest level (downsample.comp mode 1), mip 1 from mip 0 (mode
+  // 2), which nothing else checks: the cones of the scenes tested reach no further.
+  start("content/tests/no_flagged_materials.gltf",
+        with(kSmall, {"Material.UsedWithVxgiVoxelization=0", "r.VXGI.VoxelSize=0.125",
+                      "r.VXGI.TestCube=0.25 1.25 0.25 0.5"}),
+        "VXGI");
+  const float expected[3] = {1.0f, 0.25f, 0.0625f};
+  for (int k = 0; k < 3; ++k) {
+    const int level = 2 + k;  // the coarsest clipped level, then mips 0 and 1
+    engine->console().execute(fmt::format("r.VXGI.DebugLevel {}", level));
+    engine->console().execute("r.VXGI.DebugMode 2");
+    RenderedFrame opacity = render(64, 64, {}, true);
+    engine->console().execute("r.VXGI.DebugMode 3");
+    RenderedFrame emittance = render(64, 64, {}, true);
+    const ImageBuffer& o = opacity.images.at("display");
+    const ImageBuffer& e = emittance.images.at("display");
+    float alpha = 0.0f, radiance = 0.0f;
+    for (uint32_t y = 0; y < o.height; ++y)
+      for (uint32_t x = 0; x < o.width; ++x) {
+        const float a = srgbToLinear(o.at(x, y, 0)) / 0.55f;  // the +Z face's shade, as above
+        if (a > alpha) {
+          alpha = a;
+          const float r = srgbToLinear(e.at(x, y, 1));
+          radiance = r / std::max(1.0f - r, 1e-3f);
+        }
+      }
+    std::printf("storage level %d: opacity %.4f (expected %.4f), radiance %.3f\n", level, alpha, expected[k],
+                radiance);
+    EXPECT_NEAR(alpha, expected[k], 0.01f) << "storage level " << level;
+    EXPECT_NEAR(radiance, 1.0f, 0.05f) << "storage level " << level;
+  }
+}
+
 TEST_F(VxgiHardCases, ThinWallBetweenLitAndDarkRoomLeaksLessThanTwoPercent) {
   // Two 2 m rooms share a 2 cm wall, a tenth of a 27 cm voxel; only the left room has a
   // light. Compare the indirect irradiance on the dark room's floor with the lit room's
