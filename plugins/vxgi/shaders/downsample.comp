@@ -19,8 +19,8 @@
 #define WORK_COUNTERS_BINDING 50
 #include "bounce/work_counters.glsl"
 
-#if VXGI_DOWNSAMPLE_MODE <= 1
-// Modes 0 and 1 hand a brick's (or block's) voxels to the lanes in turn (main below).
+#if VXGI_DOWNSAMPLE_MODE <= 2
+// Modes 0–2 hand a brick's (or block's) voxels to the lanes in turn (main below).
 #define VXGI_SORTS_VOXELS 1
 layout(local_size_x = VXGI_DOWNSAMPLE_LANES) in;
 #else
@@ -166,6 +166,9 @@ layout(std430, binding = 61) readonly buffer VxgiBrickFlags { uint brickFlags[];
 layout(std430, binding = 65) readonly buffer VxgiVoxelStored { uint voxelStored[]; };
 #endif
 #endif
+#if VXGI_DOWNSAMPLE_MODE == 2
+#include "vxgi/scratch.glsl"  // vxgiBrickVoxel, vxgiNthSetBit
+#endif
 #if VXGI_SORTS_VOXELS
 // The brick's (block's) voxels to downsample (0, 1) and to store as zeros (2, 3), 64 bits each.
 shared uint brickVoxels[4];
@@ -227,7 +230,7 @@ void downsampleVoxel(ivec3 local) {
 #endif
 }
 
-#if VXGI_DOWNSAMPLE_MODE >= 2
+#if VXGI_DOWNSAMPLE_MODE == 3
 // Listed block `slot` of mip dstMip, whose voxels per side are `size`.
 void downsampleBlock(uint slot, int size) {
   int perAxis = (size + 3) / 4;
@@ -242,9 +245,16 @@ void downsampleBlock(uint slot, int size) {
 
 #if VXGI_SORTS_VOXELS
 // Whether any child of output voxel `local` may be non-zero. Its children are one 2³ block of
-// one finer brick: voxels 2·v .. 2·v + 1. (The pyramid's mips 1 and up, mode 2, keep a flag
-// per block only, and no test reads them: they downsample every voxel of a listed block.)
+// one finer brick or mip block: voxels 2·v .. 2·v + 1.
 bool childrenMayHoldSomething(ivec3 local) {
+#if VXGI_DOWNSAMPLE_MODE == 2
+  // Mip dstMip − 1 keeps a flag per block only (VxgiMipFlags: 0 when its texels are known
+  // to be zeros), which this frame's dispatch for that mip set where it stored something.
+  int finerAxis = (vxgiMipSize(dstMip - 1) + 3) / 4;
+  ivec3 b = local >> 1;  // (2·local) / 4
+  countWork(WORK_BUFFER_BYTES, 4u);
+  return mipFlags[dstBlocks - finerAxis * finerAxis * finerAxis + (b.z * finerAxis + b.y) * finerAxis + b.x] != 0u;
+#else
 #if VXGI_DOWNSAMPLE_MODE == 0
   int finer = pc.dstMin.w - 1;
   ivec3 t = vxgiWrap(2 * (pc.dstMin.xyz + local));  // the block's first child, toroidal
@@ -260,6 +270,7 @@ bool childrenMayHoldSomething(ivec3 local) {
   uint block = 0x00330033u << (((t.y & 3) << 2) | (t.x & 3));
   countWork(WORK_BUFFER_BYTES, 4u);  // the stored word
   return (voxelStored[vxgiVoxelStoredWord(finer, t)] & block) != 0u;
+#endif
 }
 
 // Sorts the voxels of the brick or block whose first voxel is `first` (output voxels,
@@ -333,7 +344,7 @@ void main() {
     sortBrickVoxels(first, pc.dstSize.xyz);
     downsampleSortedVoxels(first);
   }
-#elif VXGI_DOWNSAMPLE_MODE == 1
+#elif VXGI_DOWNSAMPLE_MODE != 3
   dstMip = pc.dstMin.y;
   dstBlocks = pc.dstMin.x;
   int size = pc.dstSize.x, perAxis = (size + 3) / 4;
@@ -345,14 +356,6 @@ void main() {
     sortBrickVoxels(block << 2, ivec3(size));
     if (downsampleSortedVoxels(block << 2))
       atomicOr(mipFlags[dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
-  }
-#elif VXGI_DOWNSAMPLE_MODE == 2
-  dstMip = pc.dstMin.y;
-  dstBlocks = pc.dstMin.x;
-  for (int k = 0; k < pc.dstSize.w; ++k) {
-    uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
-    if (slot >= listedBlocks[dstMip]) return;
-    downsampleBlock(slot, pc.dstSize.x);
   }
 #else
   dstMip = pc.dstMin.y;

@@ -47,8 +47,8 @@ uint32_t bricksPerListGroup(uint32_t mostListed, uint32_t least) {
 
 // downsample.comp for one of its modes: 0 clipped level → the next one's inner box, 1 the
 // coarsest clipped level → mip 0, 2 mip → mip (each mode reads and writes other layouts), 3
-// the pyramid's tail. Modes 0 and 1 hand a brick's voxels to the lanes in turn: one SIMD group
-// of lavapipe's (8 lanes) takes them one after another; a GPU's workgroup, a lane per voxel,
+// the pyramid's tail. Modes 0–2 hand a brick's voxels to the lanes in turn: one SIMD group of
+// lavapipe's (8 lanes) takes them one after another; a GPU's workgroup, a lane per voxel,
 // takes a brick at once.
 gpu::ShaderSource downsampleShader(const std::filesystem::path& shaders, const ClipMapFormat& format,
                                    int mode, bool cpuDevice) {
@@ -672,9 +672,13 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         DownsamplePush push{glm::ivec4(int32_t(flagOffsets[mip]), int32_t(mip), 0, 0),
                             glm::ivec4(glm::ivec3(int32_t(size)), int32_t(blocksPerGroup))};
         ctx.dispatchIndirect(pipeline, bindings(mip == 0 ? 1 : 2), arguments, push, mip * sizeof(glm::uvec4));
-        // The next mip reads what this one wrote.
+        // The next mip reads what this one wrote: its texels, and its block flags (which of
+        // the next mip's voxels have children that may hold something).
         for (TextureHandle t : h.clip)
           gpu::computeWriteBarrier(ctx.cmd(), ctx.image(t), gpu::ImageRange::all(), ctx.layout(t));
+        gpu::memoryBarrier(ctx.cmd(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
       }
       // The tail: one workgroup, each mip from the one before.
       const gpu::Pipeline& pipeline =
