@@ -9,24 +9,18 @@
 //                           covers)
 //   VXGI_DOWNSAMPLE_MODE 1: the coarsest clipped level → mip 0 of the pyramid
 //   VXGI_DOWNSAMPLE_MODE 2: pyramid mip m → mip m+1
-//   VXGI_DOWNSAMPLE_MODE 3: the pyramid's tail, the mips of one 4³ block or less, each
-//                           from the one before, in one workgroup (a pyramid dispatch
-//                           cost lavapipe ~0.15 ms with a shader that returned at once,
-//                           vxgi README stop 30, and these are a few dozen voxels each)
+//   VXGI_DOWNSAMPLE_MODE 3: the pyramid's tail, its smallest mips, each from the one
+//                           before, in one workgroup (voxelization_passes.cpp says which:
+//                           a dispatch and its barriers cost lavapipe more than these
+//                           mips' few listed blocks, vxgi README stops 30 and 35)
 #define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "vxgi/clip_map.glsl"
 #define WORK_COUNTERS_BINDING 50
 #include "bounce/work_counters.glsl"
 
-#if VXGI_DOWNSAMPLE_MODE <= 2
-// Modes 0–2 hand a brick's (or block's) voxels to the lanes in turn (main below).
-#define VXGI_SORTS_VOXELS 1
+// Every mode hands a brick's (or block's) voxels to the lanes in turn (main below).
 layout(local_size_x = VXGI_DOWNSAMPLE_LANES) in;
-#else
-#define VXGI_SORTS_VOXELS 0
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-#endif
 
 layout(push_constant) uniform Push {
   ivec4 dstMin;   // mode 0: first voxel (world voxels of the destination level), w: level; else x: the
@@ -41,14 +35,17 @@ layout(push_constant) uniform Push {
 #define VOXEL_FORMAT rgba16f
 #endif
 
-// The tail's mips read what the workgroup stored for the mip before: made visible by
-// memoryBarrierImage() and barrier() between mips, on images declared coherent.
+// The tail's mips read what the workgroup stored for the mip before, texels and block flags:
+// made visible by memoryBarrierImage(), memoryBarrierBuffer() and barrier() between mips, on
+// images and a buffer declared coherent.
 #if VXGI_DOWNSAMPLE_MODE == 3
 #define SRC_ACCESS coherent readonly
 #define DST_ACCESS coherent writeonly
+#define FLAGS_ACCESS coherent
 #else
 #define SRC_ACCESS readonly
 #define DST_ACCESS writeonly
+#define FLAGS_ACCESS
 #endif
 
 // Every mode reads and writes the stacked textures (clip_map.glsl: levels along Z, facing
@@ -152,7 +149,7 @@ layout(std430, binding = 64) readonly buffer VxgiVoxelStored { uint voxelStored[
 // dispatch, pc.dstSize.w blocks per workgroup), mode 3 over those of each tail mip, and
 // flag those they store something in.
 // VxgiMipFlags: per block of every mip, 0 when all its texels are known to be zero.
-layout(std430, binding = 64) buffer VxgiMipFlags { uint mipFlags[]; };
+layout(std430, binding = 64) FLAGS_ACCESS buffer VxgiMipFlags { uint mipFlags[]; };
 layout(std430, binding = 63) readonly buffer VxgiMipBlocks {
   uint listedBlocks[8];  // per mip
   uint blocks[];         // this mip's from dstBlocks: x | y << 8 | z << 16
@@ -166,13 +163,11 @@ layout(std430, binding = 61) readonly buffer VxgiBrickFlags { uint brickFlags[];
 layout(std430, binding = 65) readonly buffer VxgiVoxelStored { uint voxelStored[]; };
 #endif
 #endif
-#if VXGI_DOWNSAMPLE_MODE == 2
+#if VXGI_DOWNSAMPLE_MODE >= 2
 #include "vxgi/scratch.glsl"  // vxgiBrickVoxel, vxgiNthSetBit
 #endif
-#if VXGI_SORTS_VOXELS
 // The brick's (block's) voxels to downsample (0, 1) and to store as zeros (2, 3), 64 bits each.
 shared uint brickVoxels[4];
-#endif
 
 #if VXGI_AO_MODE
 // Ambient-occlusion mode: texture i packs the densities of directions 3i..3i+2.
@@ -230,26 +225,14 @@ void downsampleVoxel(ivec3 local) {
 #endif
 }
 
-#if VXGI_DOWNSAMPLE_MODE == 3
-// Listed block `slot` of mip dstMip, whose voxels per side are `size`.
-void downsampleBlock(uint slot, int size) {
-  int perAxis = (size + 3) / 4;
-  uint packed = blocks[dstBlocks + int(slot)];
-  ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
-  ivec3 local = (block << 2) + ivec3(gl_LocalInvocationID);
-  if (!all(lessThan(local, ivec3(size)))) return;  // a mip under 4 voxels
-  downsampleVoxel(local);
-  if (storedSomething) atomicOr(mipFlags[dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
-}
-#endif
 
-#if VXGI_SORTS_VOXELS
 // Whether any child of output voxel `local` may be non-zero. Its children are one 2³ block of
 // one finer brick or mip block: voxels 2·v .. 2·v + 1.
 bool childrenMayHoldSomething(ivec3 local) {
-#if VXGI_DOWNSAMPLE_MODE == 2
+#if VXGI_DOWNSAMPLE_MODE >= 2
   // Mip dstMip − 1 keeps a flag per block only (VxgiMipFlags: 0 when its texels are known
-  // to be zeros), which this frame's dispatch for that mip set where it stored something.
+  // to be zeros), which this frame's dispatch (or the tail, for the mip before) set where it
+  // stored something.
   int finerAxis = (vxgiMipSize(dstMip - 1) + 3) / 4;
   ivec3 b = local >> 1;  // (2·local) / 4
   countWork(WORK_BUFFER_BYTES, 4u);
@@ -329,6 +312,18 @@ bool downsampleSortedVoxels(ivec3 first) {
   for (uint i = lane; i < toZero; i += lanes) storeZeros(vxgiBrickVoxel(first, vxgiNthSetBit(zeros, i)));
   return stored;
 }
+
+#if VXGI_DOWNSAMPLE_MODE >= 1
+// Downsamples listed block `slot` of mip dstMip (`size` voxels per side) and flags it where
+// any lane stored something. Uniform control flow: every lane of the workgroup calls it.
+void downsampleListedBlock(uint slot, int size) {
+  int perAxis = (size + 3) / 4;
+  uint packed = blocks[dstBlocks + int(slot)];
+  ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
+  sortBrickVoxels(block << 2, ivec3(size));
+  if (downsampleSortedVoxels(block << 2))
+    atomicOr(mipFlags[dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
+}
 #endif
 
 void main() {
@@ -347,24 +342,21 @@ void main() {
 #elif VXGI_DOWNSAMPLE_MODE != 3
   dstMip = pc.dstMin.y;
   dstBlocks = pc.dstMin.x;
-  int size = pc.dstSize.x, perAxis = (size + 3) / 4;
   for (int k = 0; k < pc.dstSize.w; ++k) {  // as in mode 0
     uint slot = gl_WorkGroupID.x * uint(pc.dstSize.w) + uint(k);
     if (slot >= listedBlocks[dstMip]) return;
-    uint packed = blocks[dstBlocks + int(slot)];
-    ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
-    sortBrickVoxels(block << 2, ivec3(size));
-    if (downsampleSortedVoxels(block << 2))
-      atomicOr(mipFlags[dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
+    downsampleListedBlock(slot, pc.dstSize.x);
   }
 #else
   dstMip = pc.dstMin.y;
   dstBlocks = pc.dstMin.x;
   for (int m = 0; m < pc.dstMin.z; ++m, ++dstMip) {
     int size = max(clipMap.mapSize >> (dstMip + 1), 1), perAxis = (size + 3) / 4;
-    // The same count for the whole workgroup: barrier() below stays in uniform control flow.
-    for (uint slot = 0u; slot < listedBlocks[dstMip]; ++slot) downsampleBlock(slot, size);
+    // The same count for the whole workgroup: the barriers stay in uniform control flow.
+    for (uint slot = 0u; slot < listedBlocks[dstMip]; ++slot) downsampleListedBlock(slot, size);
+    // The next mip reads these texels and block flags.
     memoryBarrierImage();
+    memoryBarrierBuffer();
     barrier();
     dstBlocks += perAxis * perAxis * perAxis;
   }

@@ -96,40 +96,52 @@ TEST_F(VxgiHardCases, TestCubeIsOpaqueThenQuarterThenSixteenthAtCoarserLevels) {
 }
 
 TEST_F(VxgiHardCases, TestCubeIsAQuarterThenASixteenthInThePyramid) {
-  // The same downsampling past the clipped levels: a cube the size of one voxel of the
-  // coarsest level (0.5 m with 3 levels from 0.125 m), aligned with the voxels of the
-  // pyramid's mips 0 and 1 (1 m and 2 m: [0, 2) × [0, 2) × [0, 2) holds it), is opaque at
-  // that level, 25% at mip 0 and 6.25% at mip 1 (r.VXGI.DebugLevel 3 and 4), radiance 1.
-  // Mip 0 comes from the coarsest level (downsample.comp mode 1), mip 1 from mip 0 (mode
-  // 2), which nothing else checks: the cones of the scenes tested reach no further.
-  start("content/tests/no_flagged_materials.gltf",
-        with(kSmall, {"Material.UsedWithVxgiVoxelization=0", "r.VXGI.VoxelSize=0.125",
-                      "r.VXGI.TestCube=0.25 1.25 0.25 0.5"}),
-        "VXGI");
-  const float expected[3] = {1.0f, 0.25f, 0.0625f};
-  for (int k = 0; k < 3; ++k) {
-    const int level = 2 + k;  // the coarsest clipped level, then mips 0 and 1
-    engine->console().execute(fmt::format("r.VXGI.DebugLevel {}", level));
-    engine->console().execute("r.VXGI.DebugMode 2");
-    RenderedFrame opacity = render(64, 64, {}, true);
-    engine->console().execute("r.VXGI.DebugMode 3");
-    RenderedFrame emittance = render(64, 64, {}, true);
-    const ImageBuffer& o = opacity.images.at("display");
-    const ImageBuffer& e = emittance.images.at("display");
-    float alpha = 0.0f, radiance = 0.0f;
-    for (uint32_t y = 0; y < o.height; ++y)
-      for (uint32_t x = 0; x < o.width; ++x) {
-        const float a = srgbToLinear(o.at(x, y, 0)) / 0.55f;  // the +Z face's shade, as above
-        if (a > alpha) {
-          alpha = a;
-          const float r = srgbToLinear(e.at(x, y, 1));
-          radiance = r / std::max(1.0f - r, 1e-3f);
+  // The same downsampling past the clipped levels (3 levels from 0.125 m: the coarsest
+  // voxels are 0.5 m; the pyramid's mips 0, 1 and 2, 1, 2 and 4 m). A cube the size of one
+  // voxel, aligned with it, is opaque at its level, 25% one level coarser and 6.25% two
+  // levels coarser, radiance 1. The debug view (r.VXGI.DebugLevel: storage level 3 is mip 0)
+  // shows voxels above 5% opacity, so two cubes: one of a coarsest voxel, seen at that
+  // level and mips 0 and 1, and one of a mip-0 voxel, seen at mips 0, 1 and 2. Mip 0 comes
+  // from the coarsest level (downsample.comp mode 1); this small map's mips 1 and up are the
+  // pyramid's tail (mode 3), one workgroup, each mip reading what it stored for the one
+  // before. Nothing else checks them: the cones of the scenes tested reach no further.
+  // The camera (0, 1, 3.9) looks down −Z at both cubes' voxels' +Z faces: the second's
+  // mip-2 voxel, [−4, 0) × [0, 4) × [−4, 0), lies beside it and in front of it.
+  struct Cube {
+    const char* centreAndEdge;
+    int firstLevel;  // the storage level where the cube is one voxel
+  };
+  for (const Cube cube : {Cube{"0.25 1.25 0.25 0.5", 2}, Cube{"-0.5 1.5 -0.5 1.0", 3}}) {
+    start("content/tests/no_flagged_materials.gltf",
+          with(kSmall, {"Material.UsedWithVxgiVoxelization=0", "r.VXGI.VoxelSize=0.125",
+                        fmt::format("r.VXGI.TestCube={}", cube.centreAndEdge)}),
+          "VXGI");
+    const float expected[3] = {1.0f, 0.25f, 0.0625f};
+    for (int k = 0; k < 3; ++k) {
+      const int level = cube.firstLevel + k;
+      engine->console().execute(fmt::format("r.VXGI.DebugLevel {}", level));
+      engine->console().execute("r.VXGI.DebugMode 2");
+      RenderedFrame opacity = render(64, 64, {}, true);
+      engine->console().execute("r.VXGI.DebugMode 3");
+      RenderedFrame emittance = render(64, 64, {}, true);
+      const ImageBuffer& o = opacity.images.at("display");
+      const ImageBuffer& e = emittance.images.at("display");
+      float alpha = 0.0f, radiance = 0.0f;
+      for (uint32_t y = 0; y < o.height; ++y)
+        for (uint32_t x = 0; x < o.width; ++x) {
+          const float a = srgbToLinear(o.at(x, y, 0)) / 0.55f;  // the +Z face's shade, as above
+          if (a > alpha) {
+            alpha = a;
+            const float r = srgbToLinear(e.at(x, y, 1));
+            radiance = r / std::max(1.0f - r, 1e-3f);
+          }
         }
-      }
-    std::printf("storage level %d: opacity %.4f (expected %.4f), radiance %.3f\n", level, alpha, expected[k],
-                radiance);
-    EXPECT_NEAR(alpha, expected[k], 0.01f) << "storage level " << level;
-    EXPECT_NEAR(radiance, 1.0f, 0.05f) << "storage level " << level;
+      std::printf("cube %s, storage level %d: opacity %.4f (expected %.4f), radiance %.3f\n",
+                  cube.centreAndEdge, level, alpha, expected[k], radiance);
+      EXPECT_NEAR(alpha, expected[k], 0.01f) << cube.centreAndEdge << ", storage level " << level;
+      EXPECT_NEAR(radiance, 1.0f, 0.05f) << cube.centreAndEdge << ", storage level " << level;
+    }
+    finish();
   }
 }
 
