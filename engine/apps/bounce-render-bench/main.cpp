@@ -6,7 +6,7 @@
 //
 //   bounce-render-bench [--scene FILE] [--gi NAME] [--sizes 256,512] [--frames N]
 //                       [--set CVAR=VALUE]... [--variant "LABEL: CVAR=VALUE ..."]...
-//                       [--device NAME] [--json FILE] [--no-ceilings]
+//                       [--rounds N] [--device NAME] [--json FILE] [--no-ceilings]
 //
 // Passes named NAME.L<n> (one per level of a multi-level structure) are summed into one
 // NAME.L* row (--per-level shows each).
@@ -16,7 +16,10 @@
 // (device_ceilings.h: trilinear RGBA16F 3D samples/s, coherent and with scattered lanes;
 // storage buffer and storage image bytes/s; FMA flops/s; about a second each time;
 // --no-ceilings skips them); a size and variant is compared with the higher of the
-// two measurements around its frames. After the timed frames of each size and variant it renders one more,
+// two measurements around its frames. `--rounds N` runs all sizes and variants N times in
+// turn and takes each column's medians over every round's frames (and its highest ceilings
+// over every round), so that a shared machine's slow spells fall on every column alike
+// instead of on whichever ran then. After the timed frames of each size and variant it renders one more,
 // untimed frame with work counting on (shaders' countWork calls compile in and count; the atomics would
 // distort the times). Each pass's work is what it reported while recording (PassContext::addWork, median over
 // the timed frames that ran it) plus what its shaders counted (only if it ran in the counted frame: an
@@ -196,7 +199,7 @@ int reportWork(std::map<std::pair<size_t, uint32_t>, Measurement>& results,
                const std::vector<uint32_t>& sizes, const std::vector<bounce::BenchVariant>& variants,
                const std::vector<std::string>& rows, const std::vector<bounce::DeviceCeilings>& ceilings,
                const bounce::gpu::Device& device, const std::string& scene, const std::string& technique,
-               uint32_t frames, const std::string& jsonPath) {
+               uint32_t timedFrames, const std::string& jsonPath) {
   const std::optional<bounce::DeviceCeilings> median =
       ceilings.empty() ? std::nullopt : std::optional(bounce::medianOf(ceilings));
   const bounce::DeviceCeilings* c = median ? &*median : nullptr;
@@ -212,7 +215,7 @@ int reportWork(std::map<std::pair<size_t, uint32_t>, Measurement>& results,
   if (jsonPath.empty()) return 0;
   std::string error;
   if (!bounce::writeJsonFile(
-          jsonPath, bounce::benchJson(device.name(), scene, technique, frames - 1, c, columns), &error)) {
+          jsonPath, bounce::benchJson(device.name(), scene, technique, timedFrames, c, columns), &error)) {
     bounce::app::printError("bounce-render-bench", error);
     return 2;
   }
@@ -236,6 +239,12 @@ int main(int argc, char** argv) {
   app.add_option("--sizes", sizes, "Square output sizes")->delimiter(',');
   app.add_option("--frames", frames, "Frames per size and variant (the first is not timed)")
       ->check(CLI::Range(2u, 10000u));
+  uint32_t rounds = 1;
+  app.add_option(
+         "--rounds", rounds,
+         "Run every size and variant this many times in turn, --frames each time, and take the medians "
+         "over all rounds (a busy machine's slow spells then fall on every column alike)")
+      ->check(CLI::Range(1u, 1000u));
   app.add_option("--set", sets, "Console variable NAME=VALUE for every variant (repeatable)");
   app.add_option("--variant", variantTexts,
                  "\"LABEL: CVAR=VALUE ...\": settings measured as one column, restored afterwards "
@@ -327,61 +336,83 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> passes;                             // every pass seen, in execution order
   std::map<std::pair<size_t, uint32_t>, Measurement> results;  // (variant, size)
-  for (uint32_t size : sizes) {
-    const bounce::FrameView view = bounce::FrameView::fromCamera(camera, size, size);
-    for (size_t v = 0; v < variants.size(); ++v) {
-      std::optional<bounce::AppliedVariant> applied =
-          bounce::applyBenchVariant(engine.cvars(), variants[v], &error);
-      if (!applied) {
-        bounce::app::printError("bounce-render-bench",
-                                fmt::format("variant '{}': {}", variants[v].label, error));
-        return 2;
-      }
-      bounce::RenderStats stats(device->name(), size, size, engine.technique());
-      for (uint32_t f = 0; f < frames; ++f) {
-        bounce::RenderedFrame frame = renderer.render(view, {}, f);
-        if (!frame.gpu.ok()) {
-          bounce::app::printError("bounce-render-bench", frame.gpu.errors.front());
+  // Timed frames of every round, per (variant, size); the ceilings measured just before and
+  // after each round's frames of it.
+  std::map<std::pair<size_t, uint32_t>, bounce::RenderStats> timed;
+  std::map<std::pair<size_t, uint32_t>, std::vector<bounce::DeviceCeilings>> around;
+  for (uint32_t round = 0; round < rounds; ++round) {
+    const bool lastRound = round + 1 == rounds;
+    for (uint32_t size : sizes) {
+      const bounce::FrameView view = bounce::FrameView::fromCamera(camera, size, size);
+      for (size_t v = 0; v < variants.size(); ++v) {
+        std::optional<bounce::AppliedVariant> applied =
+            bounce::applyBenchVariant(engine.cvars(), variants[v], &error);
+        if (!applied) {
+          bounce::app::printError("bounce-render-bench",
+                                  fmt::format("variant '{}': {}", variants[v].label, error));
           return 2;
         }
-        if (f > 0) stats.addFrame(frame.gpu);
-      }
-      // One more frame, untimed, with the shaders' work counters compiled in.
-      renderer.executor().setWorkCounting(true);
-      bounce::RenderedFrame counted = renderer.render(view, {}, frames);
-      renderer.executor().setWorkCounting(false);
-      if (!counted.gpu.ok()) {
-        bounce::app::printError("bounce-render-bench", counted.gpu.errors.front());
-        return 2;
-      }
-      Measurement& m = results[{v, size}];
-      mergeOrder(passes, stats.passes());
-      for (const std::string& p : stats.passes()) {
-        m.passMs[p] = stats.passMedian(p);
-        m.work[p] = stats.passRecordedWork(p);
-      }
-      for (const bounce::gpu::PassTiming& t : counted.gpu.passes)
-        for (size_t u = 0; u < bounce::kWorkUnitCount; ++u)
-          if (t.work.counted[u] && m.passMs.count(t.name)) {
-            m.work[t.name][u] += double(t.work.counted[u]);
-            m.gpuCounted[t.name][u] = true;
+        bounce::RenderStats& stats =
+            timed.try_emplace({v, size}, device->name(), size, size, engine.technique()).first->second;
+        // The first frame of each round is not timed either: the previous column's settings
+        // left it to rebuild what this one's change.
+        for (uint32_t f = 0; f < frames; ++f) {
+          bounce::RenderedFrame frame = renderer.render(view, {}, f);
+          if (!frame.gpu.ok()) {
+            bounce::app::printError("bounce-render-bench", frame.gpu.errors.front());
+            return 2;
           }
-      m.frameMs = stats.frameMedian();
-      for (const auto& r : renderer.executor().memory().resources)
-        m.persistentBytes += r.persistent ? r.bytes : 0;
-      applied->restore(engine.cvars());
-      if (!measureCeilings()) return 2;
-      if (!noCeilings) m.ceilings = bounce::highestOf({ceilings[ceilings.size() - 2], ceilings.back()});
-      fmt::print(stderr, "bounce-render-bench: {}² {}: {:.3f} ms per frame\n", size,
-                 variants[v].label.empty() ? "(current settings)" : variants[v].label, m.frameMs);
+          if (f > 0) stats.addFrame(frame.gpu);
+        }
+        Measurement& m = results[{v, size}];
+        if (lastRound) {
+          // One more frame, untimed, with the shaders' work counters compiled in.
+          renderer.executor().setWorkCounting(true);
+          bounce::RenderedFrame counted = renderer.render(view, {}, frames);
+          renderer.executor().setWorkCounting(false);
+          if (!counted.gpu.ok()) {
+            bounce::app::printError("bounce-render-bench", counted.gpu.errors.front());
+            return 2;
+          }
+          mergeOrder(passes, stats.passes());
+          for (const std::string& p : stats.passes()) {
+            m.passMs[p] = stats.passMedian(p);
+            m.work[p] = stats.passRecordedWork(p);
+          }
+          for (const bounce::gpu::PassTiming& t : counted.gpu.passes)
+            for (size_t u = 0; u < bounce::kWorkUnitCount; ++u)
+              if (t.work.counted[u] && m.passMs.count(t.name)) {
+                m.work[t.name][u] += double(t.work.counted[u]);
+                m.gpuCounted[t.name][u] = true;
+              }
+          m.frameMs = stats.frameMedian();
+          for (const auto& r : renderer.executor().memory().resources)
+            m.persistentBytes += r.persistent ? r.bytes : 0;
+        }
+        applied->restore(engine.cvars());
+        if (!measureCeilings()) return 2;
+        if (!noCeilings) {
+          std::vector<bounce::DeviceCeilings>& a = around[{v, size}];
+          a.push_back(ceilings[ceilings.size() - 2]);
+          a.push_back(ceilings.back());
+          if (lastRound) m.ceilings = bounce::highestOf(a);
+        }
+        fmt::print(
+            stderr, "bounce-render-bench: {}² {}{}: {:.3f} ms per frame\n", size,
+            variants[v].label.empty() ? "(current settings)" : variants[v].label,
+            rounds > 1 ? fmt::format(", round {} of {} (median so far)", round + 1, rounds) : std::string(),
+            stats.frameMedian());
+      }
     }
   }
   const std::vector<std::string> rows = perLevel ? passes : groupedRows(passes);
   if (!perLevel)
     for (auto& [key, m] : results) addLevelSums(m);
 
-  fmt::print("{}, scene {}, GI {}: GPU ms per pass, median of {} frames\n\n", device->name(), scenePath,
-             engine.technique(), frames - 1);
+  const uint32_t timedFrames = (frames - 1) * rounds;
+  fmt::print("{}, scene {}, GI {}: GPU ms per pass, median of {} frames{}\n\n", device->name(), scenePath,
+             engine.technique(), timedFrames,
+             rounds > 1 ? fmt::format(" ({} rounds of {})", rounds, frames - 1) : std::string());
   if (lightMove != 0.0f) {
     const bounce::FrameView view = bounce::FrameView::fromCamera(camera, sizes.front(), sizes.front());
     const bounce::LightMoveConvergence c = bounce::measureLightMoveConvergence(
@@ -411,7 +442,7 @@ int main(int argc, char** argv) {
     }
     printTable(columns, cells, rows, /*variants=*/false);
     return reportWork(results, sizes, variants, rows, ceilings, *device, scenePath, engine.technique(),
-                      frames, jsonPath);
+                      timedFrames, jsonPath);
   }
   for (size_t v = 0; v < variants.size(); ++v)
     fmt::print("- {}: {}\n", variants[v].label, variants[v].describe());
@@ -425,6 +456,6 @@ int main(int argc, char** argv) {
     }
     printTable(columns, cells, rows, /*variants=*/true);
   }
-  return reportWork(results, sizes, variants, rows, ceilings, *device, scenePath, engine.technique(), frames,
-                    jsonPath);
+  return reportWork(results, sizes, variants, rows, ceilings, *device, scenePath, engine.technique(),
+                    timedFrames, jsonPath);
 }
