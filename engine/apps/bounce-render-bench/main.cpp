@@ -17,15 +17,15 @@
 // storage buffer and storage image bytes/s; FMA flops/s; about a second each time;
 // --no-ceilings skips them); a size and variant is compared with the higher of the
 // two measurements around its frames. `--rounds N` runs all sizes and variants N times in
-// turn and takes each column's medians over every round's frames (and its highest ceilings
-// over every round), so that a shared machine's slow spells fall on every column alike
-// instead of on whichever ran then. After the timed frames of each size and variant it renders one more,
-// untimed frame with work counting on (shaders' countWork calls compile in and count; the atomics would
-// distort the times). Each pass's work is what it reported while recording (PassContext::addWork, median over
-// the timed frames that ran it) plus what its shaders counted (only if it ran in the counted frame: an
-// incremental pass that had nothing to do then shows its recorded work alone); a second table per size and
-// variant gives, per pass and unit, the work per frame, the rate its median time gives, the ceiling for that
-// unit and the fraction of it reached.
+// turn and takes each column's medians over every round's frames (and over every round's
+// ceilings, each round's the higher of the two around its frames), so that a shared machine's slow spells
+// fall on every column alike instead of on whichever ran then. After the timed frames of each size and
+// variant it renders one more, untimed frame with work counting on (shaders' countWork calls compile in and
+// count; the atomics would distort the times). Each pass's work is what it reported while recording
+// (PassContext::addWork, median over the timed frames that ran it) plus what its shaders counted (only if it
+// ran in the counted frame: an incremental pass that had nothing to do then shows its recorded work alone); a
+// second table per size and variant gives, per pass and unit, the work per frame, the rate its median time
+// gives, the ceiling for that unit and the fraction of it reached.
 // `--json FILE` writes the ceilings (their median) and, per size and variant, its own
 // ceilings and each pass's ms, work, ceiling and fraction.
 
@@ -336,8 +336,7 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> passes;                             // every pass seen, in execution order
   std::map<std::pair<size_t, uint32_t>, Measurement> results;  // (variant, size)
-  // Timed frames of every round, per (variant, size); the ceilings measured just before and
-  // after each round's frames of it.
+  // Timed frames of every round, per (variant, size), and each round's ceilings for them.
   std::map<std::pair<size_t, uint32_t>, bounce::RenderStats> timed;
   std::map<std::pair<size_t, uint32_t>, std::vector<bounce::DeviceCeilings>> around;
   for (uint32_t round = 0; round < rounds; ++round) {
@@ -392,10 +391,11 @@ int main(int argc, char** argv) {
         applied->restore(engine.cvars());
         if (!measureCeilings()) return 2;
         if (!noCeilings) {
+          // Per round the higher of the two around its frames, as with one round (a reading a
+          // moment's load lowered is passed over); over the rounds their median.
           std::vector<bounce::DeviceCeilings>& a = around[{v, size}];
-          a.push_back(ceilings[ceilings.size() - 2]);
-          a.push_back(ceilings.back());
-          if (lastRound) m.ceilings = bounce::highestOf(a);
+          a.push_back(bounce::highestOf({ceilings[ceilings.size() - 2], ceilings.back()}));
+          if (lastRound) m.ceilings = bounce::medianOf(a);
         }
         fmt::print(
             stderr, "bounce-render-bench: {}² {}{}: {:.3f} ms per frame\n", size,
