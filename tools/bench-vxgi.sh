@@ -5,6 +5,7 @@
 #
 #   tools/bench-vxgi.sh [SIZES] [FRAMES] [extra bounce-render-bench arguments...]
 #   tools/bench-vxgi.sh 256,512 3
+#   tools/bench-vxgi.sh 256 4 --rounds 3   # on a shared machine: every column in each round
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sizes=${1:-256}
