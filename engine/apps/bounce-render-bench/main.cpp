@@ -353,8 +353,8 @@ int main(int argc, char** argv) {
         }
         bounce::RenderStats& stats =
             timed.try_emplace({v, size}, device->name(), size, size, engine.technique()).first->second;
-        // The first frame of each round is not timed either: the previous column's settings
-        // left it to rebuild what this one's change.
+        // The first frame of each round is not timed either: it rebuilds what the previous
+        // column's settings changed.
         for (uint32_t f = 0; f < frames; ++f) {
           bounce::RenderedFrame frame = renderer.render(view, {}, f);
           if (!frame.gpu.ok()) {
