@@ -166,6 +166,14 @@ layout(std430, binding = 65) readonly buffer VxgiVoxelStored { uint voxelStored[
 #if VXGI_DOWNSAMPLE_MODE >= 2
 #include "vxgi/scratch.glsl"  // vxgiBrickVoxel, vxgiNthSetBit
 #endif
+#if VXGI_DOWNSAMPLE_MODE >= 1
+// VxgiMipVoxelStored: per voxel of every mip one bit, 64 per block in two words (voxel v =
+// x + 4y + 16z of its block: bit v % 32 of word 2·block + v / 32), set while the texels this
+// pass last stored for it may be non-zero. Only this pass writes the mips, so zeros over
+// zeros need not be stored again: most voxels of a listed block are air, and lavapipe pays
+// for every texel stored (six per voxel).
+layout(std430, binding = 66) FLAGS_ACCESS buffer VxgiMipVoxelStored { uint mipVoxelStored[]; };
+#endif
 // The brick's (block's) voxels to downsample (0, 1) and to store as zeros (2, 3), 64 bits each.
 shared uint brickVoxels[4];
 
@@ -258,17 +266,19 @@ bool childrenMayHoldSomething(ivec3 local) {
 
 // Sorts the voxels of the brick or block whose first voxel is `first` (output voxels,
 // `size` per side of the output) into brickVoxels, a lane each: those whose children may hold
-// something, and the rest. Voxels outside the output (a brick reaching past the inner box,
-// whose bounds need not be brick-aligned; a mip under 4 voxels) are neither. Uniform control
-// flow: every lane of the workgroup calls it.
-void sortBrickVoxels(ivec3 first, ivec3 size) {
+// something, and those of the rest whose `stored` bit is set (zeros to store). Voxels outside
+// the output (a brick reaching past the inner box, whose bounds need not be brick-aligned; a
+// mip under 4 voxels) are neither. Uniform control flow: every lane of the workgroup calls it.
+void sortBrickVoxels(ivec3 first, ivec3 size, uvec2 stored) {
   const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
   if (lane < 4u) brickVoxels[lane] = 0u;
   barrier();
   for (uint v = lane; v < 64u; v += lanes) {
     ivec3 local = vxgiBrickVoxel(first, v);
-    if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, size)))
-      atomicOr(brickVoxels[(childrenMayHoldSomething(local) ? 0u : 2u) + (v >> 5)], 1u << (v & 31u));
+    bool wasStored = ((v < 32u ? stored.x : stored.y) & (1u << (v & 31u))) != 0u;
+    bool may = childrenMayHoldSomething(local);
+    if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, size)) && (may || wasStored))
+      atomicOr(brickVoxels[(may ? 0u : 2u) + (v >> 5)], 1u << (v & 31u));
   }
   barrier();
 }
@@ -295,22 +305,34 @@ void storeZeros(ivec3 local) {
 #endif
 }
 
+// Bit v of a block's or brick's two words.
+uvec2 voxelBit(uint v) { return v < 32u ? uvec2(1u << (v & 31u), 0u) : uvec2(0u, 1u << (v & 31u)); }
+
 // Downsamples the voxels of the brick or block at `first` that sortBrickVoxels marked, a lane
-// each in turn, and stores zeros over the rest; whether this lane stored anything non-zero.
-// Uniform control flow (barrier): every lane of the workgroup calls it.
-bool downsampleSortedVoxels(ivec3 first) {
+// each in turn, and stores zeros over those it marked as zeros; whether this lane stored
+// anything non-zero. `stored`: the voxels this lane stored (bits as VxgiMipVoxelStored's);
+// `nonZero`: those of them it stored something non-zero in. Uniform control flow
+// (barrier): every lane of the workgroup calls it.
+bool downsampleSortedVoxels(ivec3 first, out uvec2 stored, out uvec2 nonZero) {
   const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
   uvec2 downsampled = uvec2(brickVoxels[0], brickVoxels[1]), zeros = uvec2(brickVoxels[2], brickVoxels[3]);
   uint toDownsample = uint(bitCount(downsampled.x) + bitCount(downsampled.y));
   uint toZero = uint(bitCount(zeros.x) + bitCount(zeros.y));
   barrier();  // every lane has read brickVoxels before the next brick clears it
-  bool stored = false;
+  stored = uvec2(0u);
+  nonZero = uvec2(0u);
   for (uint i = lane; i < toDownsample; i += lanes) {
-    downsampleVoxel(vxgiBrickVoxel(first, vxgiNthSetBit(downsampled, i)));
-    stored = stored || storedSomething;
+    uint v = vxgiNthSetBit(downsampled, i);
+    downsampleVoxel(vxgiBrickVoxel(first, v));
+    stored |= voxelBit(v);
+    nonZero |= storedSomething ? voxelBit(v) : uvec2(0u);
   }
-  for (uint i = lane; i < toZero; i += lanes) storeZeros(vxgiBrickVoxel(first, vxgiNthSetBit(zeros, i)));
-  return stored;
+  for (uint i = lane; i < toZero; i += lanes) {
+    uint v = vxgiNthSetBit(zeros, i);
+    storeZeros(vxgiBrickVoxel(first, v));
+    stored |= voxelBit(v);
+  }
+  return any(notEqual(nonZero, uvec2(0u)));
 }
 
 #if VXGI_DOWNSAMPLE_MODE >= 1
@@ -320,9 +342,19 @@ void downsampleListedBlock(uint slot, int size) {
   int perAxis = (size + 3) / 4;
   uint packed = blocks[dstBlocks + int(slot)];
   ivec3 block = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
-  sortBrickVoxels(block << 2, ivec3(size));
-  if (downsampleSortedVoxels(block << 2))
-    atomicOr(mipFlags[dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x], 1u);
+  int index = dstBlocks + (block.z * perAxis + block.y) * perAxis + block.x;
+  // Read before any lane updates them below (after the barriers of the sort).
+  uvec2 wasStored = uvec2(mipVoxelStored[2 * index], mipVoxelStored[2 * index + 1]);
+  countWork(WORK_BUFFER_BYTES, gl_LocalInvocationIndex == 0u ? 8u : 0u);
+  sortBrickVoxels(block << 2, ivec3(size), wasStored);
+  uvec2 stored, nonZero;
+  if (downsampleSortedVoxels(block << 2, stored, nonZero)) atomicOr(mipFlags[index], 1u);
+  // Each lane updates the bits of the voxels it stored, and no others: no order between lanes needed.
+  for (int w = 0; w < 2; ++w)
+    if (stored[w] != 0u) {
+      atomicAnd(mipVoxelStored[2 * index + w], ~stored[w]);
+      atomicOr(mipVoxelStored[2 * index + w], nonZero[w]);
+    }
 }
 #endif
 
@@ -336,8 +368,11 @@ void main() {
     uint packed = bricks[slot];
     ivec3 rel = ivec3(packed & 255u, (packed >> 8) & 255u, packed >> 16);
     ivec3 first = (((pc.dstMin.xyz >> VXGI_BRICK_SHIFT) + rel) << VXGI_BRICK_SHIFT) - pc.dstMin.xyz;  // local
-    sortBrickVoxels(first, pc.dstSize.xyz);
-    downsampleSortedVoxels(first);
+    // Every voxel that is not downsampled gets zeros (VxgiVoxelStored tracks only what the
+    // resolve stored).
+    sortBrickVoxels(first, pc.dstSize.xyz, uvec2(~0u));
+    uvec2 stored, nonZero;
+    downsampleSortedVoxels(first, stored, nonZero);
   }
 #elif VXGI_DOWNSAMPLE_MODE != 3
   dstMip = pc.dstMin.y;

@@ -32,9 +32,13 @@ struct ClipMapHandles {
   /// Per 4³ block of every pyramid mip (mipFlagOffsets): 0 when all its texels are known
   /// to be zero, so the mips pass skips a block whose sources are all air (VxgiMipFlags).
   BufferHandle mipFlags;
-  /// True when brickFlags', voxelStored's and mipFlags' contents are undefined (just
-  /// created): the first voxelization sets every flag and bit, so every voxel is resolved
-  /// and every mip block computed once.
+  /// Per voxel of every pyramid mip, one bit (64 per block, two words, blocks as in
+  /// mipFlags): 0 when the texels the mips pass last stored for it were all zero, so storing
+  /// zeros there again can be skipped (downsample.comp, VxgiMipVoxelStored).
+  BufferHandle mipVoxelStored;
+  /// True when brickFlags', voxelStored's, mipFlags' and mipVoxelStored's contents are
+  /// undefined (just created): the first voxelization sets every flag and bit, so every
+  /// voxel is resolved and every mip block computed once.
   bool brickFlagsUndefined = false;
   /// The voxelization's float sums (ScratchLayout), persistent and all zeros between
   /// voxelizations: each resolve zeroes the sums it read, so no level clears the volume.
@@ -86,6 +90,7 @@ class ClipMapTextures {
   std::unique_ptr<PersistentBuffer> brickFlags_;
   std::unique_ptr<PersistentBuffer> voxelStored_;
   std::unique_ptr<PersistentBuffer> mipFlags_;
+  std::unique_ptr<PersistentBuffer> mipVoxelStored_;
   std::unique_ptr<PersistentTexture> scratch_;
   bool scratchClean_ = false;
 };

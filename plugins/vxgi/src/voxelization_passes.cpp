@@ -258,6 +258,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       handles.brickFlags = b.write(handles.brickFlags, Access::TransferDst);
       handles.voxelStored = b.write(handles.voxelStored, Access::TransferDst);
       handles.mipFlags = b.write(handles.mipFlags, Access::TransferDst);
+      handles.mipVoxelStored = b.write(handles.mipVoxelStored, Access::TransferDst);
     }
     // The scratch sums are zeros between voxelizations (each resolve zeroes what it read)
     // once they have been zeroed: here, when just allocated or after a frame that did not
@@ -266,7 +267,8 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     if (clearScratch) handles.scratch = b.write(handles.scratch, Access::TransferDst);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     BufferHandle mb = materialBuffer, lb = lightBuffer, flags = handles.brickFlags,
-                 stored = handles.voxelStored, mipFlags = handles.mipFlags;
+                 stored = handles.voxelStored, mipFlags = handles.mipFlags,
+                 mipStored = handles.mipVoxelStored;
     TextureHandle sums = handles.scratch;
     return [=](PassContext& ctx) {
       ctx.upload(mb, materialParams.data(), materialParams.size() * sizeof(glm::vec4));
@@ -275,6 +277,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(flags).handle(), 0, VK_WHOLE_SIZE, 1u);
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(stored).handle(), 0, VK_WHOLE_SIZE, ~0u);
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(mipFlags).handle(), 0, VK_WHOLE_SIZE, 1u);
+        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(mipStored).handle(), 0, VK_WHOLE_SIZE, ~0u);
       }
       if (clearScratch) {
         VkClearColorValue zero{};
@@ -657,6 +660,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     BufferHandle arguments = b.read(mipArguments, Access::Indirect);
     BufferHandle list = b.read(mipBlocks, Access::StorageRead);
     handles.mipFlags = b.write(handles.mipFlags, Access::StorageReadWrite);
+    handles.mipVoxelStored = b.write(handles.mipVoxelStored, Access::StorageReadWrite);
     // Which of the coarsest level's voxels may hold something (mip 0's children).
     BufferHandle brickFlags = b.read(handles.brickFlags, Access::StorageRead);
     BufferHandle stored = b.read(handles.voxelStored, Access::StorageRead);
@@ -668,7 +672,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         bind.buffer("clipMap", constants);
         bindStorage(bind, "voxelsSrc", h.clip);
         bindStorage(bind, "voxelsDst", h.clip);
-        bind.buffer("VxgiMipFlags", h.mipFlags).buffer("VxgiMipBlocks", list);
+        bind.buffer("VxgiMipFlags", h.mipFlags)
+            .buffer("VxgiMipBlocks", list)
+            .buffer("VxgiMipVoxelStored", h.mipVoxelStored);
         if (mode == 1) bind.buffer("VxgiBrickFlags", brickFlags).buffer("VxgiVoxelStored", stored);
         return bind;
       };
