@@ -1,6 +1,7 @@
 // bounce-render-bench's work report end to end: the ceilings are measured, each pass's
-// work and fraction reach the JSON, and an unwritable --json path is a one-line error
-// before anything is measured. (A benchmark: nothing here checks a time.)
+// work and fraction reach the JSON, --rounds takes the columns in turn and counts work once,
+// and an unwritable --json path is a one-line error before anything is measured. (A
+// benchmark: nothing here checks a time.)
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 namespace bounce {
 namespace {
@@ -62,6 +64,58 @@ TEST(BounceRenderBenchCli, WritesCeilingsAndEachPassesWorkAsJson) {
   }
   EXPECT_TRUE(tonemap) << run.dump(1);
   EXPECT_TRUE(counted) << run.dump(1);  // its fragment shader's counts were added
+}
+
+TEST(BounceRenderBenchCli, RoundsRunEveryColumnInTurnAndCountItsWorkOnce) {
+  const auto dir = std::filesystem::path(BOUNCE_BINARY_DIR) / "cli-test";
+  std::filesystem::create_directories(dir);
+  const std::string json = (dir / "render-bench-rounds.json").string();
+  const BenchResult r = runBench(
+      "--scene content/tests/emissive_quad.gltf --gi Ambient --sizes 16 --frames 3 --rounds 3 --no-ceilings "
+      "--variant \"first: \" --variant \"second: \" --json " +
+      json);
+  ASSERT_EQ(r.status, 0) << r.output;
+  // Rounds alternate the columns: first, second, first, second, first, second.
+  size_t at = 0;
+  for (int round = 1; round <= 3; ++round)
+    for (const char* column : {"first", "second"}) {
+      const std::string line = "16² " + std::string(column) + ", round " + std::to_string(round) + " of 3";
+      at = r.output.find(line, at);
+      ASSERT_NE(at, std::string::npos) << line << " (in order)\n" << r.output;
+    }
+  EXPECT_NE(r.output.find("median of 6 frames (3 rounds of 2)"), std::string::npos) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_EQ(j["timedFrames"], 6);
+  ASSERT_EQ(j["runs"].size(), 2u);
+  // Each pass's work per frame is what one round reports: recorded work is a median, and the
+  // shaders' counts (Ambient.Irradiance's) come from one counted frame, not one per round.
+  const std::string single = (dir / "render-bench-one-round.json").string();
+  const BenchResult one = runBench(
+      "--scene content/tests/emissive_quad.gltf --gi Ambient --sizes 16 --frames 3 --no-ceilings --json " +
+      single);
+  ASSERT_EQ(one.status, 0) << one.output;
+  const nlohmann::json reference = nlohmann::json::parse(std::ifstream(single));
+  std::map<std::string, double> expected;
+  for (const nlohmann::json& pass : reference["runs"][0]["passes"])
+    for (const auto& [unit, work] : pass["work"].items())
+      expected[pass["name"].get<std::string>() + " " + unit] = work["perFrame"].get<double>();
+  ASSERT_TRUE(expected.count("Ambient.Irradiance imageBytes")) << reference.dump(1);
+  for (const nlohmann::json& run : j["runs"]) {
+    size_t compared = 0;
+    for (const nlohmann::json& pass : run["passes"])
+      for (const auto& [unit, work] : pass["work"].items()) {
+        const std::string key = pass["name"].get<std::string>() + " " + unit;
+        ASSERT_TRUE(expected.count(key)) << key;
+        EXPECT_EQ(work["perFrame"].get<double>(), expected[key]) << key << ", " << run["variant"];
+        ++compared;
+      }
+    EXPECT_EQ(compared, expected.size()) << run["variant"];
+  }
+  const BenchResult zero =
+      runBench("--scene content/tests/emissive_quad.gltf --sizes 16 --frames 2 --no-ceilings --rounds 0");
+  EXPECT_NE(zero.status, 0) << zero.output;
+  EXPECT_NE(zero.output.find("--rounds"), std::string::npos) << zero.output;
+  EXPECT_EQ(zero.output.find("ms per frame"), std::string::npos) << zero.output;
 }
 
 TEST(BounceRenderBenchCli, UnwritableJsonPathIsAOneLineErrorUpFront) {
