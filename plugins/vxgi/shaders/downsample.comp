@@ -24,7 +24,7 @@ layout(local_size_x = VXGI_DOWNSAMPLE_LANES) in;
 
 layout(push_constant) uniform Push {
   ivec4 dstMin;   // mode 0: first voxel (world voxels of the destination level), w: level; else x: the
-                  // mip's first block in VxgiMipFlags and VxgiMipBlocks, y: the mip (mode 3: the
+                  // mip's first block in VxgiMipBlocks and VxgiMipVoxelStored, y: the mip (mode 3: the
                   // first of the tail's), z: mode 3: the mips in the tail
   ivec4 dstSize;  // voxels to write; w: bricks (blocks) each workgroup takes from the list
 } pc;
@@ -35,7 +35,7 @@ layout(push_constant) uniform Push {
 #define VOXEL_FORMAT rgba16f
 #endif
 
-// The tail's mips read what the workgroup stored for the mip before, texels and block flags:
+// The tail's mips read what the workgroup stored for the mip before, texels and stored bits:
 // made visible by memoryBarrierImage(), memoryBarrierBuffer() and barrier() between mips, on
 // images and a buffer declared coherent.
 #if VXGI_DOWNSAMPLE_MODE == 3
@@ -65,7 +65,7 @@ layout(binding = 32, VOXEL_FORMAT) uniform DST_ACCESS image3D voxelsDst2;
 // The facing sign a texture holds direction 3..5 at.
 #define NEGATIVE (VXGI_SIGNS == 2 ? 1 : 0)
 
-// Modes 1–3: the mip computed, and where its blocks start in VxgiMipFlags and VxgiMipBlocks
+// Modes 1–3: the mip computed, and where its blocks start in VxgiMipBlocks and VxgiMipVoxelStored
 // (pc.dstMin.y and .x; the tail sets them per mip).
 int dstMip = 0, dstBlocks = 0;
 
@@ -147,9 +147,7 @@ layout(std430, binding = 64) readonly buffer VxgiVoxelStored { uint voxelStored[
 #else
 // Modes 1 and 2 run over the 4³ blocks of the mip mip_list.comp listed (by indirect
 // dispatch, pc.dstSize.w blocks per workgroup), mode 3 over those of each tail mip, and
-// flag those they store something in.
-// VxgiMipFlags: per block of every mip, 0 when all its texels are known to be zero.
-layout(std430, binding = 64) FLAGS_ACCESS buffer VxgiMipFlags { uint mipFlags[]; };
+// keep their voxels' VxgiMipVoxelStored bits (below).
 layout(std430, binding = 63) readonly buffer VxgiMipBlocks {
   uint listedBlocks[8];  // per mip
   uint blocks[];         // this mip's from dstBlocks: x | y << 8 | z << 16
@@ -238,13 +236,15 @@ void downsampleVoxel(ivec3 local) {
 // one finer brick or mip block: voxels 2·v .. 2·v + 1.
 bool childrenMayHoldSomething(ivec3 local) {
 #if VXGI_DOWNSAMPLE_MODE >= 2
-  // Mip dstMip − 1 keeps a flag per block only (VxgiMipFlags: 0 when its texels are known
-  // to be zeros), which this frame's dispatch (or the tail, for the mip before) set where it
-  // stored something.
+  // The children's VxgiMipVoxelStored bits in mip dstMip − 1, which this frame's dispatch
+  // for that mip (or the tail, for the mip before) kept: the 2³ block at t = 2·local of
+  // finer block t / 4, all in one of its two words.
   int finerAxis = (vxgiMipSize(dstMip - 1) + 3) / 4;
-  ivec3 b = local >> 1;  // (2·local) / 4
+  ivec3 t = 2 * local, b = t >> 2;
+  int finerBlock = dstBlocks - finerAxis * finerAxis * finerAxis + (b.z * finerAxis + b.y) * finerAxis + b.x;
+  uint children = 0x00330033u << (((t.y & 3) << 2) | (t.x & 3));
   countWork(WORK_BUFFER_BYTES, 4u);
-  return mipFlags[dstBlocks - finerAxis * finerAxis * finerAxis + (b.z * finerAxis + b.y) * finerAxis + b.x] != 0u;
+  return (mipVoxelStored[2 * finerBlock + ((t.z >> 1) & 1)] & children) != 0u;
 #else
 #if VXGI_DOWNSAMPLE_MODE == 0
   int finer = pc.dstMin.w - 1;
@@ -309,11 +309,11 @@ void storeZeros(ivec3 local) {
 uvec2 voxelBit(uint v) { return v < 32u ? uvec2(1u << (v & 31u), 0u) : uvec2(0u, 1u << (v & 31u)); }
 
 // Downsamples the voxels of the brick or block at `first` that sortBrickVoxels marked, a lane
-// each in turn, and stores zeros over those it marked as zeros; whether this lane stored
-// anything non-zero. `stored`: the voxels this lane stored (bits as VxgiMipVoxelStored's);
+// each in turn, and stores zeros over those it marked as zeros. `stored`: the voxels this
+// lane stored (bits as VxgiMipVoxelStored's);
 // `nonZero`: those of them it stored something non-zero in. Uniform control flow
 // (barrier): every lane of the workgroup calls it.
-bool downsampleSortedVoxels(ivec3 first, out uvec2 stored, out uvec2 nonZero) {
+void downsampleSortedVoxels(ivec3 first, out uvec2 stored, out uvec2 nonZero) {
   const uint lanes = gl_WorkGroupSize.x, lane = gl_LocalInvocationIndex;
   uvec2 downsampled = uvec2(brickVoxels[0], brickVoxels[1]), zeros = uvec2(brickVoxels[2], brickVoxels[3]);
   uint toDownsample = uint(bitCount(downsampled.x) + bitCount(downsampled.y));
@@ -332,12 +332,11 @@ bool downsampleSortedVoxels(ivec3 first, out uvec2 stored, out uvec2 nonZero) {
     storeZeros(vxgiBrickVoxel(first, v));
     stored |= voxelBit(v);
   }
-  return any(notEqual(nonZero, uvec2(0u)));
 }
 
 #if VXGI_DOWNSAMPLE_MODE >= 1
-// Downsamples listed block `slot` of mip dstMip (`size` voxels per side) and flags it where
-// any lane stored something. Uniform control flow: every lane of the workgroup calls it.
+// Downsamples listed block `slot` of mip dstMip (`size` voxels per side) and updates its
+// voxels' stored bits. Uniform control flow: every lane of the workgroup calls it.
 void downsampleListedBlock(uint slot, int size) {
   int perAxis = (size + 3) / 4;
   uint packed = blocks[dstBlocks + int(slot)];
@@ -348,7 +347,7 @@ void downsampleListedBlock(uint slot, int size) {
   countWork(WORK_BUFFER_BYTES, gl_LocalInvocationIndex == 0u ? 8u : 0u);
   sortBrickVoxels(block << 2, ivec3(size), wasStored);
   uvec2 stored, nonZero;
-  if (downsampleSortedVoxels(block << 2, stored, nonZero)) atomicOr(mipFlags[index], 1u);
+  downsampleSortedVoxels(block << 2, stored, nonZero);
   // Each lane updates the bits of the voxels it stored, and no others: no order between lanes needed.
   for (int w = 0; w < 2; ++w)
     if (stored[w] != 0u) {

@@ -138,7 +138,7 @@ void resolveVoxel(ivec3 t, int level) {
   bool occupied = false;
   for (int d = 0; d < VXGI_DIRECTIONS; ++d) occupied = occupied || density[d] > 0.0;
   int word = vxgiVoxelStoredWord(level, t);
-  uint bit = vxgiVoxelStoredBit(t);
+  uint bit = vxgiVoxelBit(t);
   bool wasStored = (voxelStored[word] & bit) != 0u;
   // downsample.comp flags the bricks it stored something in. Inside the inner box (the
   // finer level's extent, toroidally: its origin halved, mapSize / 2 wide) this frame's
@@ -186,7 +186,7 @@ void resolveVoxel(ivec3 t, int level) {
 // something, or downsampling may have outside the inner box: zeros stored, its stored bit
 // cleared.
 void storeAir(ivec3 t, int level) {
-  atomicAnd(voxelStored[vxgiVoxelStoredWord(level, t)], ~vxgiVoxelStoredBit(t));
+  atomicAnd(voxelStored[vxgiVoxelStoredWord(level, t)], ~vxgiVoxelBit(t));
 #if VXGI_AO_MODE
   countWork(WORK_IMAGE_BYTES, uint(VXGI_DIRECTIONS / 3) * 4u);
   VXGI_STORE_CLIP(voxelsOut0, t, level, 0, vec4(0.0))

@@ -26,7 +26,7 @@ VkFormat voxelFormat(const ClipMapFormat& f) {
 
 }  // namespace
 
-std::vector<uint32_t> mipFlagOffsets(const ClipMapFormat& format) {
+std::vector<uint32_t> mipBlockOffsets(const ClipMapFormat& format) {
   std::vector<uint32_t> offsets{0};
   uint32_t size = format.mapSize / 2;
   for (uint32_t mip = 0; mip < format.mipCount(); ++mip, size /= 2) {
@@ -70,8 +70,7 @@ bool ClipMapTextures::configure(const ClipMapFormat& format) {
       "VXGI.BrickFlags", BufferDesc{bricks * bricks * bricks * format.stackLevels * sizeof(uint32_t)});
   voxelStored_ = std::make_unique<PersistentBuffer>(
       "VXGI.VoxelStored", BufferDesc{bricks * bricks * bricks * format.stackLevels * 2u * sizeof(uint32_t)});
-  const uint64_t mipBlocks = std::max<uint64_t>(mipFlagOffsets(format).back(), 1);
-  mipFlags_ = std::make_unique<PersistentBuffer>("VXGI.MipFlags", BufferDesc{mipBlocks * sizeof(uint32_t)});
+  const uint64_t mipBlocks = std::max<uint64_t>(mipBlockOffsets(format).back(), 1);
   mipVoxelStored_ = std::make_unique<PersistentBuffer>("VXGI.MipVoxelStored",
                                                        BufferDesc{mipBlocks * 2u * sizeof(uint32_t)});
   scratch_ = std::make_unique<PersistentTexture>("VXGI.Scratch", ScratchLayout::of(format).desc(format));
@@ -85,10 +84,9 @@ ClipMapHandles ClipMapTextures::import(RenderGraph& graph) {
   // The executor allocates on first use, contents undefined (and so are the textures'):
   // this frame voxelizes everything, and must first mark every brick as possibly non-zero.
   h.brickFlagsUndefined = brickFlags_->allocation() == nullptr || voxelStored_->allocation() == nullptr ||
-                          mipFlags_->allocation() == nullptr || mipVoxelStored_->allocation() == nullptr;
+                          mipVoxelStored_->allocation() == nullptr;
   h.brickFlags = graph.importBuffer(*brickFlags_);
   h.voxelStored = graph.importBuffer(*voxelStored_);
-  h.mipFlags = graph.importBuffer(*mipFlags_);
   h.mipVoxelStored = graph.importBuffer(*mipVoxelStored_);
   h.scratchUndefined = scratch_->allocation() == nullptr || !scratchClean_;
   h.scratch = graph.importTexture(*scratch_);

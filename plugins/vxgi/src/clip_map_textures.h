@@ -29,16 +29,15 @@ struct ClipMapHandles {
   /// texels the resolve stored for it were all zero, so storing air there again can be
   /// skipped (vxgi/scratch.glsl, VxgiVoxelStored).
   BufferHandle voxelStored;
-  /// Per 4³ block of every pyramid mip (mipFlagOffsets): 0 when all its texels are known
-  /// to be zero, so the mips pass skips a block whose sources are all air (VxgiMipFlags).
-  BufferHandle mipFlags;
-  /// Per voxel of every pyramid mip, one bit (64 per block, two words, blocks as in
-  /// mipFlags): 0 when the texels the mips pass last stored for it were all zero, so storing
-  /// zeros there again can be skipped (downsample.comp, VxgiMipVoxelStored).
+  /// Per voxel of every pyramid mip, one bit (64 per 4³ block, two words; blocks in
+  /// mipBlockOffsets' order): 0 when the texels the mips pass last stored for it were all
+  /// zero. So storing zeros there again can be skipped, a block whose bits are all 0 and whose
+  /// sources are all air is not computed, and a voxel whose children's bits are all 0 is
+  /// stored as zeros without its loads (mip_list.comp, downsample.comp: VxgiMipVoxelStored).
   BufferHandle mipVoxelStored;
-  /// True when brickFlags', voxelStored's, mipFlags' and mipVoxelStored's contents are
-  /// undefined (just created): the first voxelization sets every flag and bit, so every
-  /// voxel is resolved and every mip block computed once.
+  /// True when brickFlags', voxelStored's and mipVoxelStored's contents are undefined (just
+  /// created): the first voxelization sets every flag and bit, so every voxel is resolved
+  /// and every mip block computed once.
   bool brickFlagsUndefined = false;
   /// The voxelization's float sums (ScratchLayout), persistent and all zeros between
   /// voxelizations: each resolve zeroes the sums it read, so no level clears the volume.
@@ -89,15 +88,14 @@ class ClipMapTextures {
   std::vector<std::unique_ptr<PersistentTexture>> clip_;
   std::unique_ptr<PersistentBuffer> brickFlags_;
   std::unique_ptr<PersistentBuffer> voxelStored_;
-  std::unique_ptr<PersistentBuffer> mipFlags_;
   std::unique_ptr<PersistentBuffer> mipVoxelStored_;
   std::unique_ptr<PersistentTexture> scratch_;
   bool scratchClean_ = false;
 };
 
-/// Where each pyramid mip's flags start in VxgiMipFlags: one uint per 4³ block of the mip
+/// Where each pyramid mip's blocks start in the mips' per-block lists: one per 4³ block of the mip
 /// (a workgroup of the mips pass, ⌈size/4⌉³), mip after mip; the last entry is the total.
-std::vector<uint32_t> mipFlagOffsets(const ClipMapFormat& format);
+std::vector<uint32_t> mipBlockOffsets(const ClipMapFormat& format);
 
 /// Voxels per side of a brick of the clip-map (VXGI_BRICK_SHIFT in vxgi/scratch.glsl).
 inline constexpr uint32_t kBrickVoxels = 4;

@@ -257,7 +257,6 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     if (fillFlags) {
       handles.brickFlags = b.write(handles.brickFlags, Access::TransferDst);
       handles.voxelStored = b.write(handles.voxelStored, Access::TransferDst);
-      handles.mipFlags = b.write(handles.mipFlags, Access::TransferDst);
       handles.mipVoxelStored = b.write(handles.mipVoxelStored, Access::TransferDst);
     }
     // The scratch sums are zeros between voxelizations (each resolve zeroes what it read)
@@ -267,8 +266,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     if (clearScratch) handles.scratch = b.write(handles.scratch, Access::TransferDst);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     BufferHandle mb = materialBuffer, lb = lightBuffer, flags = handles.brickFlags,
-                 stored = handles.voxelStored, mipFlags = handles.mipFlags,
-                 mipStored = handles.mipVoxelStored;
+                 stored = handles.voxelStored, mipStored = handles.mipVoxelStored;
     TextureHandle sums = handles.scratch;
     return [=](PassContext& ctx) {
       ctx.upload(mb, materialParams.data(), materialParams.size() * sizeof(glm::vec4));
@@ -276,7 +274,6 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       if (fillFlags) {
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(flags).handle(), 0, VK_WHOLE_SIZE, 1u);
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(stored).handle(), 0, VK_WHOLE_SIZE, ~0u);
-        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(mipFlags).handle(), 0, VK_WHOLE_SIZE, 1u);
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(mipStored).handle(), 0, VK_WHOLE_SIZE, ~0u);
       }
       if (clearScratch) {
@@ -593,7 +590,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
 
   // The pyramid's blocks that may hold something or lie over flagged bricks of the
   // coarsest level (mip_list.comp); the mips are computed over just those.
-  const std::vector<uint32_t> flagOffsets = mipFlagOffsets(format);
+  const std::vector<uint32_t> blockOffsets = mipBlockOffsets(format);
   const uint32_t mips = format.mipCount();
   // Blocks per workgroup. A CPU device pays for every workgroup it starts, but the mips
   // list only a few dozen blocks, which groups of 8 (the brick lists' choice) spread over
@@ -601,7 +598,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   // re-voxelized every frame (three runs each, ms): 64³ 1.37–1.51 with 8 blocks a group,
   // 1.03–1.06 with 2, 1.00–1.30 with 4, 1.18–1.25 with 1; 128³ 1.96–2.01, 1.40–1.56,
   // 1.26–1.32 and 1.71–1.82.
-  const uint32_t blocksPerGroup = bricksPerListGroup(flagOffsets.back(), cpuDevice ? 4u : 1u);
+  const uint32_t blocksPerGroup = bricksPerListGroup(blockOffsets.back(), cpuDevice ? 4u : 1u);
   // The pyramid's tail: its smallest mips, computed one after another in one workgroup
   // (downsample.comp, mode 3); never mip 0, which reads the coarsest level. On a GPU the
   // tail is the mips of one block (4³ voxels or fewer). On lavapipe a dispatch with the
@@ -618,14 +615,14 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   graph.addPass("VXGI.MipList", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     BufferHandle constants = b.read(handles.constants, Access::Uniform);
     BufferHandle levelFlags = b.read(handles.brickFlags, Access::StorageRead);
-    handles.mipFlags = b.write(handles.mipFlags, Access::StorageReadWrite);
+    handles.mipVoxelStored = b.read(handles.mipVoxelStored, Access::StorageRead);
     mipArguments =
         b.write(b.createBuffer("VXGI.MipArguments", {8 * sizeof(glm::uvec4)}), Access::StorageReadWrite);
     mipBlocks =
-        b.write(b.createBuffer("VXGI.MipBlocks", {(8 + uint64_t(flagOffsets.back())) * sizeof(uint32_t)}),
+        b.write(b.createBuffer("VXGI.MipBlocks", {(8 + uint64_t(blockOffsets.back())) * sizeof(uint32_t)}),
                 Access::StorageReadWrite);
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
-    BufferHandle flags = handles.mipFlags, arguments = mipArguments, list = mipBlocks;
+    BufferHandle stored = handles.mipVoxelStored, arguments = mipArguments, list = mipBlocks;
     return [=](PassContext& ctx) {
       // No workgroups and no blocks listed yet, for every mip.
       std::array<glm::uvec4, 8> noGroups;
@@ -639,16 +636,16 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       gpu::Bindings bind;
       bind.buffer("clipMap", constants)
           .buffer("VxgiBrickFlags", levelFlags)
-          .buffer("VxgiMipFlags", flags)
+          .buffer("VxgiMipVoxelStored", stored)
           .buffer("VxgiMipArguments", arguments)
           .buffer("VxgiMipBlocks", list);
       struct {
         std::array<int32_t, 8> offsets;
         glm::ivec4 total;
       } push{};
-      for (uint32_t m = 0; m < mips && m < 8; ++m) push.offsets[m] = int32_t(flagOffsets[m]);
-      push.total = glm::ivec4(int32_t(flagOffsets.back()), int32_t(mips), int32_t(blocksPerGroup), 0);
-      ctx.dispatchThreads(pipeline, bind, glm::uvec3(flagOffsets.back(), 1, 1), push);
+      for (uint32_t m = 0; m < mips && m < 8; ++m) push.offsets[m] = int32_t(blockOffsets[m]);
+      push.total = glm::ivec4(int32_t(blockOffsets.back()), int32_t(mips), int32_t(blocksPerGroup), 0);
+      ctx.dispatchThreads(pipeline, bind, glm::uvec3(blockOffsets.back(), 1, 1), push);
     };
   });
 
@@ -659,7 +656,6 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     writeAll(b, handles.clip);
     BufferHandle arguments = b.read(mipArguments, Access::Indirect);
     BufferHandle list = b.read(mipBlocks, Access::StorageRead);
-    handles.mipFlags = b.write(handles.mipFlags, Access::StorageReadWrite);
     handles.mipVoxelStored = b.write(handles.mipVoxelStored, Access::StorageReadWrite);
     // Which of the coarsest level's voxels may hold something (mip 0's children).
     BufferHandle brickFlags = b.read(handles.brickFlags, Access::StorageRead);
@@ -672,9 +668,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         bind.buffer("clipMap", constants);
         bindStorage(bind, "voxelsSrc", h.clip);
         bindStorage(bind, "voxelsDst", h.clip);
-        bind.buffer("VxgiMipFlags", h.mipFlags)
-            .buffer("VxgiMipBlocks", list)
-            .buffer("VxgiMipVoxelStored", h.mipVoxelStored);
+        bind.buffer("VxgiMipBlocks", list).buffer("VxgiMipVoxelStored", h.mipVoxelStored);
         if (mode == 1) bind.buffer("VxgiBrickFlags", brickFlags).buffer("VxgiVoxelStored", stored);
         return bind;
       };
@@ -683,7 +677,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         const gpu::Pipeline& pipeline =
             ctx.pipelines().compute(downsampleShader(shaders, format, mip == 0 ? 1 : 2, cpuDevice));
         // x: the mip's first block in the flags and the list, y: the mip.
-        DownsamplePush push{glm::ivec4(int32_t(flagOffsets[mip]), int32_t(mip), 0, 0),
+        DownsamplePush push{glm::ivec4(int32_t(blockOffsets[mip]), int32_t(mip), 0, 0),
                             glm::ivec4(glm::ivec3(int32_t(size)), int32_t(blocksPerGroup))};
         ctx.dispatchIndirect(pipeline, bindings(mip == 0 ? 1 : 2), arguments, push, mip * sizeof(glm::uvec4));
         // The next mip reads what this one wrote: its texels, and its block flags (which of
@@ -697,7 +691,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       // The tail: one workgroup, each mip from the one before.
       const gpu::Pipeline& pipeline =
           ctx.pipelines().compute(downsampleShader(shaders, format, 3, cpuDevice));
-      DownsamplePush push{glm::ivec4(int32_t(flagOffsets[tail]), int32_t(tail), int32_t(mips - tail), 0),
+      DownsamplePush push{glm::ivec4(int32_t(blockOffsets[tail]), int32_t(tail), int32_t(mips - tail), 0),
                           glm::ivec4(0)};
       ctx.dispatchThreads(pipeline, bindings(3), glm::uvec3(pipeline.localSize()[0], 1, 1), push);
     };

@@ -75,6 +75,5 @@ uint vxgiNthSetBit(uvec2 bits, uint n) {
   return position;
 }
 int vxgiVoxelStoredWord(int level, ivec3 t) { return level * vxgiBricksPerLevel() * 2 + vxgiVoxelBitWord(t); }
-uint vxgiVoxelStoredBit(ivec3 t) { return vxgiVoxelBit(t); }
 
 #endif
