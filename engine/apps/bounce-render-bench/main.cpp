@@ -17,26 +17,25 @@
 // storage buffer and storage image bytes/s; FMA flops/s; about a second each time;
 // --no-ceilings skips them); a size and variant is compared with the higher of the
 // two measurements around its frames. `--rounds N` runs all sizes and variants N times in
-// turn and takes each column's medians over every round's frames (and over every round's
-// ceilings, each round's the higher of the two around its frames), so that a shared machine's slow spells
-// fall on every column alike instead of on whichever ran then. After the timed frames of each size and
-// variant it renders one more, untimed frame with work counting on (shaders' countWork calls compile in and
-// count; the atomics would distort the times). Each pass's work is what it reported while recording
-// (PassContext::addWork, median over the timed frames that ran it) plus what its shaders counted (only if it
-// ran in the counted frame: an incremental pass that had nothing to do then shows its recorded work alone); a
-// second table per size and variant gives, per pass and unit, the work per frame, the rate its median time
-// gives, the ceiling for that unit and the fraction of it reached.
+// turn and takes each column's medians over every round, so that a shared machine's slow
+// spells fall on every column alike instead of on whichever ran then (column_measurement.h
+// says how a column is measured). Each pass's work is what it reported while recording
+// (PassContext::addWork, median over the timed frames that ran it) plus what its shaders
+// counted in one more, untimed frame (only if it ran then: an incremental pass that had
+// nothing to do shows its recorded work alone); a second table per size and variant gives,
+// per pass and unit, the work per frame, the rate its median time gives, the ceiling for
+// that unit and the fraction of it reached.
 // `--json FILE` writes the ceilings (their median) and, per size and variant, its own
 // ceilings and each pass's ms, work, ceiling and fraction.
 
 #include "bounce-render-bench/light_move_convergence.h"
 #include "bounce/core/log.h"
 #include "bounce/engine.h"
-#include "renderer/render_stats.h"
 #include "renderer/renderer.h"
 #include "scene/generated_scenes.h"
 
 #include "bounce-render-bench/bench_variant.h"
+#include "bounce-render-bench/column_measurement.h"
 #include "bounce-render-bench/device_ceilings.h"
 #include "bounce-render-bench/work_report.h"
 #include "parse_arguments.h"
@@ -45,7 +44,6 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <array>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -53,79 +51,10 @@
 
 namespace {
 
-using WorkAmounts = std::array<double, bounce::kWorkUnitCount>;
-
-struct Measurement {
-  std::map<std::string, double> passMs;     ///< median per pass (and per NAME.L* group)
-  std::map<std::string, WorkAmounts> work;  ///< per frame: recorded median + shader counts
-  std::map<std::string, std::array<bool, bounce::kWorkUnitCount>> gpuCounted;
-  double frameMs = 0.0;
-  uint64_t persistentBytes = 0;
-  std::optional<bounce::DeviceCeilings> ceilings;  ///< measured around these frames
-};
-
-/// Adds `pass` to `order` after `previous` (the pass before it in the frame that ran it),
-/// so passes only some settings run keep their place in the frame.
-void mergeOrder(std::vector<std::string>& order, const std::vector<std::string>& frame) {
-  auto at = order.begin();
-  for (const std::string& p : frame) {
-    auto found = std::find(order.begin(), order.end(), p);
-    at = found != order.end() ? found + 1 : order.insert(at, p) + 1;
-  }
-}
-
-/// The table's rows: each family of NAME.L<n> passes as one NAME.L* row, where its first
-/// member was.
-std::vector<std::string> groupedRows(const std::vector<std::string>& passes) {
-  std::vector<std::string> rows;
-  for (const std::string& p : passes) {
-    const std::string row = bounce::levelGroup(p).value_or(p);
-    if (std::find(rows.begin(), rows.end(), row) == rows.end()) rows.push_back(row);
-  }
-  return rows;
-}
-
-/// Adds each NAME.L* row's value: the sum of its members that ran.
-void addLevelSums(std::map<std::string, double>& ms) {
-  std::map<std::string, double> sums;
-  for (const auto& [pass, value] : ms)
-    if (auto group = bounce::levelGroup(pass)) sums[*group] += value;
-  ms.insert(sums.begin(), sums.end());
-}
-
-/// The same for work: a NAME.L* row did the work of all its members.
-void addLevelSums(Measurement& m) {
-  addLevelSums(m.passMs);
-  std::map<std::string, WorkAmounts> sums;
-  std::map<std::string, std::array<bool, bounce::kWorkUnitCount>> counted;
-  for (const auto& [pass, amounts] : m.work)
-    if (auto group = bounce::levelGroup(pass))
-      for (size_t u = 0; u < bounce::kWorkUnitCount; ++u) {
-        sums[*group][u] += amounts[u];
-        counted[*group][u] = counted[*group][u] || m.gpuCounted[pass][u];
-      }
-  m.work.insert(sums.begin(), sums.end());
-  m.gpuCounted.insert(counted.begin(), counted.end());
-}
-
-/// One size and variant's passes, in the table's row order, for the work report.
-bounce::MeasuredColumn measuredColumn(const Measurement& m, uint32_t size, const std::string& variant,
-                                      const std::vector<std::string>& rows) {
-  bounce::MeasuredColumn c{size, variant, m.frameMs, {}, m.ceilings};
-  for (const std::string& row : rows) {
-    auto ms = m.passMs.find(row);
-    if (ms == m.passMs.end()) continue;  // not run at this size or variant
-    bounce::MeasuredPass p{row, ms->second, {}, {}};
-    if (auto w = m.work.find(row); w != m.work.end()) p.work = w->second;
-    if (auto g = m.gpuCounted.find(row); g != m.gpuCounted.end()) p.gpuCounted = g->second;
-    c.passes.push_back(std::move(p));
-  }
-  return c;
-}
-
 /// One table: a row per pass, a column per `columns` entry; sizes get a column with the
 /// ratio of the last to the first, variants rows with each column's ratio to the first.
-void printTable(const std::vector<std::string>& columns, const std::vector<const Measurement*>& cells,
+void printTable(const std::vector<std::string>& columns,
+                const std::vector<const bounce::ColumnMeasurement*>& cells,
                 const std::vector<std::string>& passes, bool variants) {
   std::string header = fmt::format("| {:<26} |", "pass (ms)");
   std::string rule = "|----------------------------|";
@@ -141,7 +70,7 @@ void printTable(const std::vector<std::string>& columns, const std::vector<const
   fmt::print("{}\n{}\n", header, rule);
   auto row = [&](const std::string& name, auto value, const char* format) {
     std::string line = fmt::format("| {:<26} |", name);
-    for (const Measurement* m : cells) {
+    for (const bounce::ColumnMeasurement* m : cells) {
       const std::optional<double> v = value(*m);
       line += v ? fmt::format(fmt::runtime(format), *v) : std::string("            - |");
     }
@@ -154,24 +83,25 @@ void printTable(const std::vector<std::string>& columns, const std::vector<const
   for (const std::string& p : passes)
     row(
         p,
-        [&p](const Measurement& m) -> std::optional<double> {
+        [&p](const bounce::ColumnMeasurement& m) -> std::optional<double> {
           auto it = m.passMs.find(p);
           return it == m.passMs.end() ? std::nullopt : std::optional<double>(it->second);
         },
         " {:>12.3f} |");
   row(
-      "frame", [](const Measurement& m) -> std::optional<double> { return m.frameMs; }, " {:>12.3f} |");
+      "frame", [](const bounce::ColumnMeasurement& m) -> std::optional<double> { return m.frameMs; },
+      " {:>12.3f} |");
   if (variants) {
     const double first = cells.front()->frameMs;
     row(
         "frame ÷ first column",
-        [first](const Measurement& m) -> std::optional<double> {
+        [first](const bounce::ColumnMeasurement& m) -> std::optional<double> {
           return first > 0.0 ? std::optional<double>(m.frameMs / first) : std::nullopt;
         },
         " {:>11.3f}× |");
     row(
         "persistent memory (MiB)",
-        [](const Measurement& m) -> std::optional<double> {
+        [](const bounce::ColumnMeasurement& m) -> std::optional<double> {
           return double(m.persistentBytes) / double(1 << 20);
         },
         " {:>12.1f} |");
@@ -195,7 +125,7 @@ void warnIfMachineIsBusy(const bounce::gpu::Device& device) {
 
 /// Prints the ceilings and, per size and variant, each pass's work against them; writes
 /// the JSON. Returns the exit status.
-int reportWork(std::map<std::pair<size_t, uint32_t>, Measurement>& results,
+int reportWork(std::map<std::pair<size_t, uint32_t>, bounce::ColumnMeasurement>& results,
                const std::vector<uint32_t>& sizes, const std::vector<bounce::BenchVariant>& variants,
                const std::vector<std::string>& rows, const std::vector<bounce::DeviceCeilings>& ceilings,
                const bounce::gpu::Device& device, const std::string& scene, const std::string& technique,
@@ -207,7 +137,7 @@ int reportWork(std::map<std::pair<size_t, uint32_t>, Measurement>& results,
   std::vector<bounce::MeasuredColumn> columns;
   for (uint32_t s : sizes)
     for (size_t v = 0; v < variants.size(); ++v) {
-      columns.push_back(measuredColumn(results[{v, s}], s, variants[v].label, rows));
+      columns.push_back(bounce::measuredColumn(results[{v, s}], s, variants[v].label, rows));
       fmt::print("\nWork against the ceilings, {}²{}:\n\n{}", s,
                  variants[v].label.empty() ? "" : " " + variants[v].label,
                  bounce::workTable(columns.back(), c));
@@ -315,99 +245,20 @@ int main(int argc, char** argv) {
   }
   bounce::Renderer renderer(engine, *device);
   warnIfMachineIsBusy(*device);
-  // Before the frames, and again after each size and variant (the column between two
-  // measurements is compared with the higher): empty with --no-ceilings.
-  std::vector<bounce::DeviceCeilings> ceilings;
-  auto measureCeilings = [&]() -> bool {
-    if (noCeilings) return true;
-    try {
-      ceilings.push_back(bounce::measureDeviceCeilings(*device, renderer.pipelines()));
-    } catch (const std::exception& e) {
-      bounce::app::printError("bounce-render-bench", fmt::format("device ceilings: {}", e.what()));
-      return false;
-    }
-    fmt::print(stderr, "bounce-render-bench: device ceilings measured in {:.2f} s\n",
-               ceilings.back().seconds);
-    return true;
-  };
-  if (!measureCeilings()) return 2;
   const bounce::Camera camera =
       engine.scene()->cameras().empty() ? bounce::Camera{} : engine.scene()->cameras()[0];
-
-  std::vector<std::string> passes;                             // every pass seen, in execution order
-  std::map<std::pair<size_t, uint32_t>, Measurement> results;  // (variant, size)
-  // Timed frames of every round, per (variant, size), and each round's ceilings for them.
-  std::map<std::pair<size_t, uint32_t>, bounce::RenderStats> timed;
-  std::map<std::pair<size_t, uint32_t>, std::vector<bounce::DeviceCeilings>> around;
-  for (uint32_t round = 0; round < rounds; ++round) {
-    const bool lastRound = round + 1 == rounds;
-    for (uint32_t size : sizes) {
-      const bounce::FrameView view = bounce::FrameView::fromCamera(camera, size, size);
-      for (size_t v = 0; v < variants.size(); ++v) {
-        std::optional<bounce::AppliedVariant> applied =
-            bounce::applyBenchVariant(engine.cvars(), variants[v], &error);
-        if (!applied) {
-          bounce::app::printError("bounce-render-bench",
-                                  fmt::format("variant '{}': {}", variants[v].label, error));
-          return 2;
-        }
-        bounce::RenderStats& stats =
-            timed.try_emplace({v, size}, device->name(), size, size, engine.technique()).first->second;
-        // The first frame of each round is not timed either: it rebuilds what the previous
-        // column's settings changed.
-        for (uint32_t f = 0; f < frames; ++f) {
-          bounce::RenderedFrame frame = renderer.render(view, {}, f);
-          if (!frame.gpu.ok()) {
-            bounce::app::printError("bounce-render-bench", frame.gpu.errors.front());
-            return 2;
-          }
-          if (f > 0) stats.addFrame(frame.gpu);
-        }
-        Measurement& m = results[{v, size}];
-        if (lastRound) {
-          // One more frame, untimed, with the shaders' work counters compiled in.
-          renderer.executor().setWorkCounting(true);
-          bounce::RenderedFrame counted = renderer.render(view, {}, frames);
-          renderer.executor().setWorkCounting(false);
-          if (!counted.gpu.ok()) {
-            bounce::app::printError("bounce-render-bench", counted.gpu.errors.front());
-            return 2;
-          }
-          mergeOrder(passes, stats.passes());
-          for (const std::string& p : stats.passes()) {
-            m.passMs[p] = stats.passMedian(p);
-            m.work[p] = stats.passRecordedWork(p);
-          }
-          for (const bounce::gpu::PassTiming& t : counted.gpu.passes)
-            for (size_t u = 0; u < bounce::kWorkUnitCount; ++u)
-              if (t.work.counted[u] && m.passMs.count(t.name)) {
-                m.work[t.name][u] += double(t.work.counted[u]);
-                m.gpuCounted[t.name][u] = true;
-              }
-          m.frameMs = stats.frameMedian();
-          for (const auto& r : renderer.executor().memory().resources)
-            m.persistentBytes += r.persistent ? r.bytes : 0;
-        }
-        applied->restore(engine.cvars());
-        if (!measureCeilings()) return 2;
-        if (!noCeilings) {
-          // Per round the higher of the two around its frames, as with one round (a reading a
-          // moment's load lowered is passed over); over the rounds their median.
-          std::vector<bounce::DeviceCeilings>& a = around[{v, size}];
-          a.push_back(bounce::highestOf({ceilings[ceilings.size() - 2], ceilings.back()}));
-          if (lastRound) m.ceilings = bounce::medianOf(a);
-        }
-        fmt::print(
-            stderr, "bounce-render-bench: {}² {}{}: {:.3f} ms per frame\n", size,
-            variants[v].label.empty() ? "(current settings)" : variants[v].label,
-            rounds > 1 ? fmt::format(", round {} of {} (median so far)", round + 1, rounds) : std::string(),
-            stats.frameMedian());
-      }
-    }
+  std::optional<bounce::MeasuredRun> run = bounce::measureColumns(
+      engine, renderer, camera,
+      {.sizes = sizes, .variants = variants, .frames = frames, .rounds = rounds, .ceilings = !noCeilings},
+      &error);
+  if (!run) {
+    bounce::app::printError("bounce-render-bench", error);
+    return 2;
   }
-  const std::vector<std::string> rows = perLevel ? passes : groupedRows(passes);
+  std::map<std::pair<size_t, uint32_t>, bounce::ColumnMeasurement>& results = run->columns;
+  const std::vector<std::string> rows = perLevel ? run->passes : bounce::groupedRows(run->passes);
   if (!perLevel)
-    for (auto& [key, m] : results) addLevelSums(m);
+    for (auto& [key, m] : results) bounce::addLevelSums(m);
 
   const uint32_t timedFrames = (frames - 1) * rounds;
   fmt::print("{}, scene {}, GI {}: GPU ms per pass, median of {} frames{}\n\n", device->name(), scenePath,
@@ -435,13 +286,13 @@ int main(int argc, char** argv) {
   }
   if (variants.size() == 1) {
     std::vector<std::string> columns;
-    std::vector<const Measurement*> cells;
+    std::vector<const bounce::ColumnMeasurement*> cells;
     for (uint32_t s : sizes) {
       columns.push_back(fmt::format("{}²", s));
       cells.push_back(&results[{0, s}]);
     }
     printTable(columns, cells, rows, /*variants=*/false);
-    return reportWork(results, sizes, variants, rows, ceilings, *device, scenePath, engine.technique(),
+    return reportWork(results, sizes, variants, rows, run->ceilings, *device, scenePath, engine.technique(),
                       timedFrames, jsonPath);
   }
   for (size_t v = 0; v < variants.size(); ++v)
@@ -449,13 +300,13 @@ int main(int argc, char** argv) {
   for (uint32_t s : sizes) {
     fmt::print("\n{}²\n\n", s);
     std::vector<std::string> columns;
-    std::vector<const Measurement*> cells;
+    std::vector<const bounce::ColumnMeasurement*> cells;
     for (size_t v = 0; v < variants.size(); ++v) {
       columns.push_back(variants[v].label);
       cells.push_back(&results[{v, s}]);
     }
     printTable(columns, cells, rows, /*variants=*/true);
   }
-  return reportWork(results, sizes, variants, rows, ceilings, *device, scenePath, engine.technique(),
+  return reportWork(results, sizes, variants, rows, run->ceilings, *device, scenePath, engine.technique(),
                     timedFrames, jsonPath);
 }
