@@ -78,6 +78,7 @@ SUNLIT_SUN_ELEVATION_DEGREES = 30.0  # the sun shines in towards -z, down at thi
 SUNLIT_THIN_WALL_THICKNESS = 0.1   # m: thinner than the coarse voxels the leak test uses
 SUNLIT_WINDOW_OFFSET = 1.0         # m along +x: the opening 0.4 m from the +x wall
 SUNLIT_BACK_CAMERA_TILT_DEGREES = -20.0
+SUNLIT_HIGH_SUN_ELEVATION_DEGREES = 50.0  # the patch a metre nearer the window wall
 TINY_SCENE_SIZE = 0.1              # m, a floor tile with a 4 cm box: inside one 1 m voxel
 LIT_FLOOR_SIZE = 30.0              # m, square slab, top at y = 0; the wall across its middle
 LIT_FLOOR_WALL_HEIGHT = 8.0        # m, wall 30 m wide and 0.2 m thick, front face at z = 0.1
@@ -496,15 +497,19 @@ def x_rotation(degrees):
     return [math.sin(half), 0.0, 0.0, math.cos(half)]
 
 
-def sunlit_room(thickness=SUNLIT_WALL_THICKNESS, window_x=0, look_at_window=False):
+def sunlit_room(thickness=SUNLIT_WALL_THICKNESS, window_x=0, look_at_window=False,
+                sun_elevation=SUNLIT_SUN_ELEVATION_DEGREES):
     """A closed room lit only by the sun through a window in the +z wall: the light enters
     as a patch on the floor and reaches the rest by bouncing; the sunlit outer faces (the
     window wall's and the roof's) must not leak in. `window_x` moves the opening along x;
-    `look_at_window` puts the camera in the back of the room, facing the window wall."""
+    `look_at_window` puts the camera in the back of the room, facing the window wall;
+    `sun_elevation` (degrees) moves the patch: a higher sun puts it nearer the window wall."""
     t = thickness
     note = "closed room, %g cm walls, lit only by the sun through a window in the +z wall" % round(t * 100, 3)
     if window_x:
         note += ", the window %g m off centre" % window_x
+    if sun_elevation != SUNLIT_SUN_ELEVATION_DEGREES:
+        note += ", the sun %g degrees high" % sun_elevation
     s = GltfScene(note)
     wall = s.material("Wall", (SUNLIT_ALBEDO,) * 3, extras=VOXELIZE_FLAG)
     w, h, d = SUNLIT_ROOM_SIZE
@@ -524,7 +529,7 @@ def sunlit_room(thickness=SUNLIT_WALL_THICKNESS, window_x=0, look_at_window=Fals
     top = h - sill - wh
     s.object("AboveWindow", Geometry().box((ww, top, t)), wall, (window_x, sill + wh + top / 2, z))
     s.light("Sun", "directional", SUNLIT_SUN_IRRADIANCE, (0, h + 2, hz + 3),
-            x_rotation(-SUNLIT_SUN_ELEVATION_DEGREES), extras=INDIRECT_LIGHT_FLAG)
+            x_rotation(-sun_elevation), extras=INDIRECT_LIGHT_FLAG)
     if look_at_window:
         # From the back of the room, turned round and tilted down (the quaternion product
         # y(180) x(tilt)): the window wall, the floor in front of it with the sun patch, and
@@ -574,6 +579,8 @@ def main():
     sunlit_room(SUNLIT_THIN_WALL_THICKNESS).write(os.path.join(tests, "sunlit_room_10cm.gltf"))
     sunlit_room(SUNLIT_THIN_WALL_THICKNESS, window_x=SUNLIT_WINDOW_OFFSET, look_at_window=True).write(
         os.path.join(tests, "sunlit_room_10cm_offset_window.gltf"))
+    sunlit_room(look_at_window=True, sun_elevation=SUNLIT_HIGH_SUN_ELEVATION_DEGREES).write(
+        os.path.join(tests, "sunlit_room_high_sun_window_view.gltf"))
     lit_floor_and_wall().write(os.path.join(tests, "lit_floor_and_wall.gltf"))
 
 

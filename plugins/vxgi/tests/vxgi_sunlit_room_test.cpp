@@ -120,10 +120,12 @@ WallLight VxgiSunlitRoom::measure(const std::string& scene, const std::vector<st
 // VXGI gathers one bounce of the light, so on no wall may it exceed what the path tracer
 // finds with every bounce: light a one-bounce method shows beyond that did not reach the
 // wall through the room. The full light is 3.0–3.4 times the one bounce on these walls and
-// 1.9–2.1 times on the ceiling (albedo 0.6), and the floor, which holds the sun patch, has
-// no one bounce at all, so this bound is looser than the one-bounce ratios and holds
-// whatever the cones' pattern. Measured: at most 0.67 (the 20 cm room's right wall at 64³),
-// a margin far above the reference's noise. Before the coarser fetch stayed in front of the
+// 1.9–2.1 times on the ceiling (albedo 0.6; with the sun at 50°, 2.1–2.2 and 1.5), and the
+// floor, which holds the sun patch, has no one bounce at all, so this bound is looser than
+// the one-bounce ratios and holds whatever the cones' pattern. Measured: at most 0.67 with
+// the sun at 30° (the 20 cm room's right wall at 64³), 0.87 at 50° (its ceiling). At the
+// defaults the high-sun room's ceiling reaches it (1.00; vxgi README, "Known gaps"), so that
+// room is not among DefaultSettingsKeepTheOuterFacesOut's. Before the coarser fetch stayed in front of the
 // apex (clip_map.glsl, vxgiCoarsePosition) the 10 cm room's window wall read 1.6 times
 // the full light at the defaults.
 void expectNoWallAboveAllBounces(const WallLight& w, const std::string& scene) {
@@ -142,9 +144,11 @@ double brightestWall(const WallLight& w) {
 }
 
 TEST_F(VxgiSunlitRoom, SunlitOuterFacesDoNotFloodTheRoom) {
-  // Three rooms seen from the back, facing the window wall: 10 cm walls, 20 cm walls, and
-  // 10 cm walls with the window 1 m off centre; 10 cm voxels at level 0 (64³ × 3 levels),
-  // so the thin walls are a voxel thick and share coarser voxels with the outside.
+  // Four rooms seen from the back, facing the window wall: 10 cm walls, 20 cm walls,
+  // 10 cm walls with the window 1 m off centre, and 20 cm walls with the sun at 50° instead
+  // of 30° (its patch a metre nearer the window wall, its light on the roof 1.4 times as
+  // strong); 10 cm voxels at level 0 (64³ × 3 levels), so the thin walls are a voxel thick
+  // and share coarser voxels with the outside.
   //
   // Until the voxelizer took a fragment's depth span from the flat normal (voxelize.frag),
   // derivatives taken after a discard spread the sunlit outer faces' emittance two voxels
@@ -159,17 +163,20 @@ TEST_F(VxgiSunlitRoom, SunlitOuterFacesDoNotFloodTheRoom) {
   // (vxgiCoarsePosition): window wall 1.28 / 1.26 / 1.19, view 1.30 / 1.30 / 1.16, the
   // brightest wall 1.92 / 2.10 / 1.20 (the right one; the left ones read 1.15 / 1.15 / 1.10,
   // the 8 cones are not mirror images on the two walls; with 32 they agreed, 0.91–1.22).
+  // The high sun (added in stop 36, not tuned for): window wall 1.25, view 1.25, brightest
+  // wall 1.36 (the left one), every wall at most 0.87 of every bounce.
   // Bounds: the measured values plus 10–25% (the reference's noise is ~2%): window wall
   // below 1.4, view below 1.5, every wall below 2.4; each fails the code before 6bc1895.
   // Against every bounce of the path tracer no wall is brighter (expectNoWallAboveAllBounces):
-  // measured 0.23–0.67. Against its one bounce the side walls still differ (above).
+  // measured 0.23–0.87. Against its one bounce the side walls still differ (above).
   struct Case {
     const char* scene;
     double windowWall, view, brightest;  // measured ratios to the reference
   };
   for (const Case& c : {Case{"content/tests/sunlit_room_10cm_window_view.gltf", 1.28, 1.30, 1.92},
                         Case{"content/tests/sunlit_room_window_view.gltf", 1.26, 1.30, 2.10},
-                        Case{"content/tests/sunlit_room_10cm_offset_window.gltf", 1.19, 1.16, 1.20}}) {
+                        Case{"content/tests/sunlit_room_10cm_offset_window.gltf", 1.19, 1.16, 1.20},
+                        Case{"content/tests/sunlit_room_high_sun_window_view.gltf", 1.25, 1.25, 1.36}}) {
     const WallLight w = measure(c.scene, {"r.VXGI.MapSize=64", "r.VXGI.VoxelSize=0.1"});
     ASSERT_GT(w.pixels[5], 1000u) << c.scene << ": the window wall fills most of the view";
     EXPECT_LT(w.ratio(5), 1.4) << c.scene << " (measured " << c.windowWall << ")";
