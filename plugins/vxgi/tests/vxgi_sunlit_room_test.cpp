@@ -129,11 +129,13 @@ WallLight VxgiSunlitRoom::measure(const std::string& scene, const std::vector<st
 // apex (clip_map.glsl, vxgiCoarsePosition) the 10 cm room's window wall read 1.6 times
 // the full light at the defaults.
 void expectNoWallAboveAllBounces(const WallLight& w, const std::string& scene) {
-  for (int i = 0; i < 6; ++i)
-    if (w.pixels[i] > 0)
+  for (int i = 0; i < 6; ++i) {
+    if (w.pixels[i] > 0) {
       EXPECT_LT(w.vxgi[i], w.allBounces[i])
           << scene << ", " << kWalls[i] << ": VXGI's one bounce " << w.vxgi[i]
           << " W/m² above the path tracer's every bounce " << w.allBounces[i];
+    }
+  }
 }
 
 double brightestWall(const WallLight& w) {
