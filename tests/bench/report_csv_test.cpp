@@ -70,6 +70,8 @@ const std::vector<std::string> kFixedColumns = {"technique",
                                                 "irradiance_mean_rel_error",
                                                 "irradiance_max_abs",
                                                 "irradiance_mean_ratio",
+                                                "irradiance_region_ratio_lowest",
+                                                "irradiance_region_ratio_highest",
                                                 "path_tracer_equivalent_ms",
                                                 "on_pareto_front",
                                                 "image",
@@ -100,8 +102,13 @@ Measurement vxgiDefault() {
   m.transientBytes = 4096;
   m.radiance.meanRelativeError = 0.05;
   m.radiance.maxAbsoluteError = 3.5;
-  m.irradiance = {
-      .rmse = 0, .relativeRmse = 0.07, .meanRelativeError = 0.08, .maxAbsoluteError = 1.5, .meanRatio = 1.25};
+  m.irradiance = {.rmse = 0,
+                  .relativeRmse = 0.07,
+                  .meanRelativeError = 0.08,
+                  .maxAbsoluteError = 1.5,
+                  .meanRatio = 1.25,
+                  .lowestRegionRatio = 0.5,
+                  .highestRegionRatio = 2.25};
   m.pathTracerEquivalentMs = 246;
   m.image = "images/vxgi_default.png";
   m.heatMap = "heat/vxgi_default.png";
@@ -144,6 +151,8 @@ TEST(ReportCsv, RowHoldsTheMeasurementsValues) {
   EXPECT_EQ(column(rows, 1, "irradiance_mean_rel_error"), "0.08");
   EXPECT_EQ(column(rows, 1, "irradiance_max_abs"), "1.5");
   EXPECT_EQ(column(rows, 1, "irradiance_mean_ratio"), "1.25");
+  EXPECT_EQ(column(rows, 1, "irradiance_region_ratio_lowest"), "0.5");
+  EXPECT_EQ(column(rows, 1, "irradiance_region_ratio_highest"), "2.25");
   EXPECT_EQ(column(rows, 1, "path_tracer_equivalent_ms"), "246");
   EXPECT_EQ(column(rows, 1, "on_pareto_front"), "1");
   EXPECT_EQ(column(rows, 1, "image"), "images/vxgi_default.png");

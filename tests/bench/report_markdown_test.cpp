@@ -39,6 +39,8 @@ Report sampleReport() {
   fast.persistentBytes = 3 * 1024 * 1024;
   fast.transientBytes = 1024 * 1024 / 2;
   fast.irradiance.meanRatio = 1.2;
+  fast.irradiance.lowestRegionRatio = 0.12;
+  fast.irradiance.highestRegionRatio = 2.5;
   fast.image = "images/vxgi default.png";
   fast.heatMap = "heat/vxgi_default.png";
   Measurement ssgi = measured("SSGI", "SSGI | half res", 3, 0.3);
@@ -105,7 +107,7 @@ TEST(ReportMarkdown, DefaultConfigurationIsBoldAndOthersAreNot) {
 TEST(ReportMarkdown, RowShowsTimesMemoryErrorsPathTracerRatioParetoAndLinks) {
   const std::string row = rowOf(writeAndRead(sampleReport()), "VXGI defaults");
   EXPECT_EQ(row,
-            "| **VXGI defaults** | 18.0 | 2.00 | 20.0 | 3.5 | 0.05 | 0 | 0 | 1.2 | 12.3× | ✓ | "
+            "| **VXGI defaults** | 18.0 | 2.00 | 20.0 | 3.5 | 0.05 | 0 | 0 | 1.2 | 0.12–2.5 | 12.3× | ✓ | "
             "[img](images/vxgi%20default.png) | [heat map](heat/vxgi_default.png) |");
 }
 

@@ -26,6 +26,8 @@ void expectAllStatsNaN(const ImageErrorStats& stats) {
   EXPECT_TRUE(std::isnan(stats.maxAbsoluteError));
   EXPECT_TRUE(std::isnan(stats.meanAbsoluteError));
   EXPECT_TRUE(std::isnan(stats.meanRatio));
+  EXPECT_TRUE(std::isnan(stats.lowestRegionRatio));
+  EXPECT_TRUE(std::isnan(stats.highestRegionRatio));
 }
 
 // ---- ImageBuffer --------------------------------------------------------------------
@@ -89,6 +91,35 @@ TEST(CompareImages, MeanRatioShowsABiasThatErrorsOfEitherSignHide) {
   EXPECT_DOUBLE_EQ(compareImages(brighter, reference).meanRatio, 2.0);
   EXPECT_DOUBLE_EQ(compareImages(darker, reference).meanRatio, 0.5);
   EXPECT_TRUE(std::isnan(compareImages(brighter, ImageBuffer(2, 1, 3, 0.0f)).meanRatio));
+}
+
+TEST(CompareImages, RegionRatiosFindWhatTheMeanRatioAveragesAway) {
+  // 8×8 pixels, a 4×4 grid of 2×2 cells. The reference is 1 everywhere; the image is 2 in
+  // the top-left cell, 0.25 in the bottom-right one and 1 elsewhere: the mean ratio reads
+  // (14 + 2 + 0.25) / 16 ≈ 1.02, the cells 0.25 and 2.
+  ImageBuffer reference(8, 8, 3, 1.0f), image(8, 8, 3, 1.0f);
+  for (uint32_t y = 0; y < 2; ++y)
+    for (uint32_t x = 0; x < 2; ++x)
+      for (uint32_t c = 0; c < 3; ++c) {
+        image.at(x, y, c) = 2.0f;
+        image.at(6 + x, 6 + y, c) = 0.25f;
+      }
+  ImageErrorStats stats = compareImages(image, reference);
+  EXPECT_DOUBLE_EQ(stats.meanRatio, 16.25 / 16.0);
+  EXPECT_DOUBLE_EQ(stats.lowestRegionRatio, 0.25);
+  EXPECT_DOUBLE_EQ(stats.highestRegionRatio, 2.0);
+  // A cell the reference leaves nearly dark (under 1/64 of its sum) does not count, however
+  // bright the image is there: the bottom-right cell's reference drops to 0.01.
+  for (uint32_t y = 6; y < 8; ++y)
+    for (uint32_t x = 6; x < 8; ++x)
+      for (uint32_t c = 0; c < 3; ++c) reference.at(x, y, c) = 0.01f;
+  stats = compareImages(image, reference);
+  EXPECT_DOUBLE_EQ(stats.lowestRegionRatio, 1.0);
+  EXPECT_DOUBLE_EQ(stats.highestRegionRatio, 2.0);
+  // A black reference has no region ratios, as it has no mean ratio.
+  stats = compareImages(image, ImageBuffer(8, 8, 3, 0.0f));
+  EXPECT_TRUE(std::isnan(stats.lowestRegionRatio));
+  EXPECT_TRUE(std::isnan(stats.highestRegionRatio));
 }
 
 TEST(CompareImages, EpsilonBoundsRelativeErrorAgainstBlack) {

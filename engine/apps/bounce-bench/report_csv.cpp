@@ -85,6 +85,8 @@ bool writeCsv(const Report& report, const std::string& path, std::string* error)
                                      "irradiance_mean_rel_error",
                                      "irradiance_max_abs",
                                      "irradiance_mean_ratio",
+                                     "irradiance_region_ratio_lowest",
+                                     "irradiance_region_ratio_highest",
                                      "path_tracer_equivalent_ms",
                                      "on_pareto_front",
                                      "image",
@@ -112,6 +114,8 @@ bool writeCsv(const Report& report, const std::string& path, std::string* error)
         csvNumber(m.irradiance.meanRelativeError),
         csvNumber(m.irradiance.maxAbsoluteError),
         csvNumber(m.irradiance.meanRatio),
+        csvNumber(m.irradiance.lowestRegionRatio),
+        csvNumber(m.irradiance.highestRegionRatio),
         // Negative means "outside the path tracer's measured range": missing, like NaN.
         m.pathTracerEquivalentMs < 0 ? std::string() : csvNumber(m.pathTracerEquivalentMs),
         m.onParetoFront ? "1" : "0",

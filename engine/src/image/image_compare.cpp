@@ -3,6 +3,8 @@
 #include "image/compared_pixels.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 
 namespace bounce {
@@ -12,6 +14,7 @@ ImageErrorStats compareImages(const ImageBuffer& image, const ImageBuffer& refer
   ImageErrorStats stats;
   stats.rmse = stats.relativeRmse = stats.meanRelativeError = kNaN;
   stats.maxAbsoluteError = stats.meanAbsoluteError = stats.meanRatio = kNaN;
+  stats.lowestRegionRatio = stats.highestRegionRatio = kNaN;
   if (!image::comparable(image, reference)) return stats;
 
   // A pixel with a NaN/Inf is counted and left out, so one bad sample does not turn every
@@ -20,8 +23,11 @@ ImageErrorStats compareImages(const ImageBuffer& image, const ImageBuffer& refer
   const image::ComparedPixels compared(image, reference);
   double squared = 0, absolute = 0, relative = 0, sum = 0, referenceSum = 0, maxAbsolute = 0;
   size_t values = 0;
+  std::array<double, kRegionGrid * kRegionGrid> regionSum{}, regionReference{};
   for (uint32_t y = 0; y < image.height; ++y) {
     for (uint32_t x = 0; x < image.width; ++x) {
+      const size_t region =
+          size_t(y) * kRegionGrid / image.height * kRegionGrid + size_t(x) * kRegionGrid / image.width;
       const glm::vec3 a = compared.values(image, x, y);
       const glm::vec3 b = compared.values(reference, x, y);
       if (!compared.finite(a)) {
@@ -36,6 +42,8 @@ ImageErrorStats compareImages(const ImageBuffer& image, const ImageBuffer& refer
         relative += image::relativeError(a[c], b[c], epsilon);
         sum += a[c];
         referenceSum += b[c];
+        regionSum[region] += a[c];
+        regionReference[region] += b[c];
         maxAbsolute = std::max(maxAbsolute, std::abs(difference));
         ++values;
       }
@@ -53,6 +61,17 @@ ImageErrorStats compareImages(const ImageBuffer& image, const ImageBuffer& refer
   stats.maxAbsoluteError = maxAbsolute;
   stats.meanAbsoluteError = absolute / n;
   stats.meanRatio = referenceSum == 0.0 ? kNaN : sum / referenceSum;
+  // A cell counts with at least a quarter of its share of the reference (1/64 of the sum);
+  // a positive threshold also keeps a black or negative reference out.
+  const double least = referenceSum / double(4 * kRegionGrid * kRegionGrid);
+  for (size_t r = 0; r < regionSum.size(); ++r) {
+    if (!(least > 0.0) || regionReference[r] < least) continue;
+    const double ratio = regionSum[r] / regionReference[r];
+    stats.lowestRegionRatio =
+        std::isnan(stats.lowestRegionRatio) ? ratio : std::min(stats.lowestRegionRatio, ratio);
+    stats.highestRegionRatio =
+        std::isnan(stats.highestRegionRatio) ? ratio : std::max(stats.highestRegionRatio, ratio);
+  }
   return stats;
 }
 

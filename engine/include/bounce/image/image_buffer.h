@@ -62,8 +62,18 @@ struct ImageErrorStats {
   /// Σ image / Σ reference over the compared values: the bias an RMSE hides (1.2: 20% too
   /// bright on average). NaN when the reference sums to 0.
   double meanRatio = 0;
+  /// The same ratio in each cell of a kRegionGrid × kRegionGrid grid over the image: the
+  /// lowest and the highest, where a method is too dark and too bright. meanRatio averages
+  /// those away (a wall at 0.1 of the reference below a window and 2× around it can read 1.2
+  /// overall). Only cells holding at least 1/64 of the reference's sum count, a quarter of a
+  /// cell's share of it: a cell the reference leaves nearly dark (a floor that the one bounce
+  /// does not reach) would give a large ratio of two small, noisy sums. NaN when no cell
+  /// counts.
+  double lowestRegionRatio = 0, highestRegionRatio = 0;
   size_t nonFinite = 0;  ///< pixels of `image` with a NaN/Inf in a compared channel
 };
+/// Cells per side of the grid of ImageErrorStats' region ratios.
+inline constexpr uint32_t kRegionGrid = 4;
 /// `epsilon` keeps relative errors finite where the reference is black (units of the
 /// images, e.g. 0.01 W/(m²·sr) for radiance). Sizes must match; otherwise stats are NaN
 /// (nonFinite 0).
