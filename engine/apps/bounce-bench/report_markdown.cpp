@@ -138,8 +138,7 @@ void appendTechniqueTable(std::string& out, const TechniqueGroup& group) {
   out +=
       "| Configuration | GPU ms | CPU ms | Total ms | Memory MiB | Radiance rel. RMSE | Radiance mean rel. "
       "error | Irradiance rel. RMSE | Irradiance ÷ reference | By region | Path tracer needs | Pareto | "
-      "Image | "
-      "Heat map |\n";
+      "Image | Heat map |\n";
   out += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|---|---|\n";
   for (const Measurement* m : rows) {
     const std::string label = cellText(m->config.label.empty() ? m->config.technique : m->config.label);

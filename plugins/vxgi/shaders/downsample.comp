@@ -276,9 +276,11 @@ void sortBrickVoxels(ivec3 first, ivec3 size, uvec2 stored) {
   for (uint v = lane; v < 64u; v += lanes) {
     ivec3 local = vxgiBrickVoxel(first, v);
     bool wasStored = ((v < 32u ? stored.x : stored.y) & (1u << (v & 31u))) != 0u;
-    bool may = childrenMayHoldSomething(local);
-    if (all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, size)) && (may || wasStored))
-      atomicOr(brickVoxels[(may ? 0u : 2u) + (v >> 5)], 1u << (v & 31u));
+    // Outside the output a voxel's children are not asked: past a small mip's block they
+    // would be another mip's bits.
+    bool inside = all(greaterThanEqual(local, ivec3(0))) && all(lessThan(local, size));
+    bool may = inside && childrenMayHoldSomething(local);
+    if (inside && (may || wasStored)) atomicOr(brickVoxels[(may ? 0u : 2u) + (v >> 5)], 1u << (v & 31u));
   }
   barrier();
 }
