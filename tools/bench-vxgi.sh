@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The VXGI benchmark tables (a benchmark, not a test): per-pass GPU ms on the Cornell box
 # for map sizes 64 and 128, 4/8/16 diffuse cones, ambient-occlusion mode, and a frame that
-# re-voxelizes everything, all in one run so the ratios are comparable.
+# re-voxelizes everything (one bounce and the default bounces), all in one run so the ratios
+# are comparable.
 #
 #   tools/bench-vxgi.sh [SIZES] [FRAMES] [extra bounce-render-bench arguments...]
 #   tools/bench-vxgi.sh 256,512 3
@@ -17,6 +18,9 @@ for map in 64 128; do
     variants+=(--variant "${map}³ ${cones} cones: r.VXGI.MapSize=${map} r.VXGI.DiffuseCones=${cones}")
   done
   variants+=(--variant "${map}³ AO: r.VXGI.MapSize=${map} r.VXGI.AmbientOcclusionMode=1")
+  # Re-voxelized whole every frame: with the seed's one bounce, and with the default bounces,
+  # where every voxelized surface also gathers its indirect light (r.VXGI.BounceCones cones).
+  variants+=(--variant "${map}³ 8 cones, re-voxelized, 1 bounce: r.VXGI.MapSize=${map} r.VXGI.DiffuseCones=8 r.VXGI.Bounces=1 r.VXGI.ForceFullVoxelization=1")
   variants+=(--variant "${map}³ 8 cones, re-voxelized: r.VXGI.MapSize=${map} r.VXGI.DiffuseCones=8 r.VXGI.ForceFullVoxelization=1")
 done
 exec build/bin/bounce-render-bench --gi VXGI --sizes "$sizes" --frames "$frames" "${variants[@]}" "$@"

@@ -7,7 +7,7 @@
 #define WORK_COUNTERS_BINDING 30
 #include "bounce/work_counters.glsl"
 #ifndef VXGI_NO_TRACING  // the interpolation pass reads only the G-buffer
-#include "vxgi/trace_cone.glsl"
+#include "vxgi/diffuse_gather.glsl"
 #endif
 
 layout(push_constant) uniform Push {
@@ -43,15 +43,6 @@ ivec2 mortonPixel() {
   return ivec2(gl_WorkGroupID.xy * 8u + inTile);
 }
 
-// Orthonormal basis around n (Duff et al. 2017: branchless, no singularity).
-void basis(vec3 n, out vec3 t, out vec3 b) {
-  float s = n.z >= 0.0 ? 1.0 : -1.0;
-  float a = -1.0 / (s + n.z);
-  float c = n.x * n.y * a;
-  t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
-  b = vec3(c, s + n.y * n.y * a, -n.y);
-}
-
 // World position and normal of a full-resolution pixel; false for background or a
 // pixel whose normal is unusable.
 bool surfaceAt(ivec2 pixel, out vec3 P, out vec3 N, out float roughness) {
@@ -67,24 +58,9 @@ bool surfaceAt(ivec2 pixel, out vec3 P, out vec3 N, out float roughness) {
 }
 
 #ifndef VXGI_NO_TRACING
-// Where cones start: off the surface along its normal by `normalOffset` voxels of the
-// finest level that holds P, so a cone does not see the surface it leaves.
-vec3 coneOrigin(vec3 P, vec3 N) {
-  int level = max(vxgiFinestLevelAt(P, 0), 0);
-  return P + N * (pc.tracing.w * vxgiVoxelSize(level));
-}
-
-// A cone leaving the surface at P (normal N) with the pass's step and range: it starts
-// off the surface (coneOrigin) and TraceCone keeps its filter off it.
+// A cone leaving the surface at P (normal N) with the pass's step, range and normal offset.
 ConeTracingArguments surfaceConeArguments(vec3 P, vec3 N) {
-  ConeTracingArguments args = DefaultConeTracingArguments();
-  args.firstSamplePosition = coneOrigin(P, N);
-  args.surfaceNormal = N;
-  args.surfaceDistance = dot(args.firstSamplePosition - P, N);
-  args.firstSampleDistance = 1.0;
-  args.stepFactor = pc.tracing.y;
-  args.maxDistance = pc.tracing.z;
-  return args;
+  return vxgiSurfaceCone(P, N, pc.tracing.w, pc.tracing.y, pc.tracing.z);
 }
 
 #endif  // VXGI_NO_TRACING

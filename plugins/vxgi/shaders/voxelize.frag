@@ -5,17 +5,28 @@
 // through, per facing direction, with float atomics into the scratch volume. The
 // resolve pass turns the sums into opacity and premultiplied emittance.
 #extension GL_EXT_shader_atomic_float : require
-#define VXGI_CLIP_MAP_TEXTURES 0
+// VXGI_MULTI_BOUNCE (set by the plugin while r.VXGI.Bounces > 1, never in ambient-occlusion
+// mode): each surface also sends out the indirect light the clip-map as it stands gathers
+// at it (below), so the emittance holds bounced light too.
+#ifndef VXGI_MULTI_BOUNCE
+#define VXGI_MULTI_BOUNCE 0
+#endif
+#define VXGI_CLIP_MAP_TEXTURES VXGI_MULTI_BOUNCE
 #include "bounce/common.glsl"
 #include "bounce/scene.glsl"
 #include "bounce/lights.glsl"
 #include "vxgi/clip_map.glsl"
 #include "vxgi/scratch.glsl"
+#if VXGI_MULTI_BOUNCE
+#include "vxgi/diffuse_gather.glsl"
+#endif
 #define WORK_COUNTERS_BINDING 40
 #include "bounce/work_counters.glsl"  // before shadows.glsl: its taps count themselves
 
+// bounce: x cones of the multi-bounce gather (0: none this voxelization), y their step
+// factor, z their range (m), w their normal offset (voxels).
 SCENE_DRAW_PUSH_CONSTANTS(ivec4 regionMin; ivec4 regionMax; ivec4 innerMin; ivec4 innerMax; ivec4 scratchLayout;
-                          vec4 ambient;)
+                          vec4 ambient; vec4 bounce;)
 
 SCENE_MATERIALS(27)
 LIGHTS(24)
@@ -80,6 +91,21 @@ float pixelCoverage(vec2 pixel, vec2 p0, vec2 p1, vec2 p2) {
   float area = edgeCoverage(a, b) + edgeCoverage(b, c) + edgeCoverage(c, a);
   return clamp(abs(area), 0.0, 1.0);
 }
+
+#if VXGI_MULTI_BOUNCE
+// PCG3D (Jarzynski and Olano, JCGT 2020): three well-mixed words from three.
+uvec3 pcg3d(uvec3 v) {
+  v = v * 1664525u + 1013904223u;
+  v.x += v.y * v.z;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  v ^= v >> 16u;
+  v.x += v.y * v.z;
+  v.y += v.z * v.x;
+  v.z += v.x * v.y;
+  return v;
+}
+#endif
 
 bool inBox(ivec3 c, ivec4 lo, ivec4 hi) { return all(greaterThanEqual(c, lo.xyz)) && all(lessThan(c, hi.xyz)); }
 
@@ -169,14 +195,46 @@ void main() {
   halfB[axisB] = 0.5 * v;
   halfB[gAxis] = -0.5 * v * n[axisB] / n[gAxis];
   outgoingRadiance(n, doubleSided, albedo, emission, halfA, halfB, front, back);
-  front = sanitize(front, HALF_MAX);
-  back = sanitize(back, HALF_MAX);
 #endif
-  int perDirection = draw.scratchLayout.y;  // 4 (rgb·w, w) or 1 (w, AO mode)
   // Integer bounds: a float counter stops advancing at large magnitudes, and a corner
   // extrapolated far out for a sliver triangle could make the span huge.
   if (!(abs(depth) < 1e6)) discard;
   int k0 = int(first), k1 = min(int(last), k0 + 8);
+#if VXGI_MULTI_BOUNCE
+  // Multi-bounce: the surface also reflects the indirect light that reaches it, gathered by
+  // diffuse cones from the clip-map as the last voxelization left it (which held the
+  // bounces before, so each voxelization adds one; the plugin re-voxelizes until
+  // r.VXGI.Bounces are in). Only fragments that write a voxel gather: the inner box of a
+  // coarser level is the finer level's downsampled.
+  int bounceCones = int(draw.bounce.x);
+  bool writes = false;
+  for (int k = k0; k <= k1; ++k) {
+    ivec3 voxel = c;
+    voxel[gAxis] = k;
+    writes = writes || (inBox(voxel, draw.regionMin, draw.regionMax) && !inBox(voxel, draw.innerMin, draw.innerMax));
+  }
+  if (!writes) discard;
+  if (bounceCones > 0 && any(greaterThan(albedo, vec3(0.0)))) {
+    // Each voxel column turns the cone pattern about the normal its own way: the cones that
+    // read this emittance average it over many voxels, and so over many turns, where one
+    // fixed pattern would give every surface the same directional bias. Only a turn: cones
+    // also moved outwards within their rings (up to grazing) lost 2.8% of the white
+    // furnace's light per bounce, against 1.3% with each at its ring's middle.
+    float turn = float(pcg3d(uvec3(c) + uvec3(uint(gAxis) << 30)).x >> 8) * (1.0 / 16777216.0);
+    ConeTracingArguments args = vxgiSurfaceCone(gWorld, n, draw.bounce.w, draw.bounce.y, draw.bounce.z);
+    front += albedo * INV_PI * vxgiGatherDiffuse(args, n, bounceCones, turn).irradiance;
+    if (doubleSided) {
+      args = vxgiSurfaceCone(gWorld, -n, draw.bounce.w, draw.bounce.y, draw.bounce.z);
+      back += albedo * INV_PI * vxgiGatherDiffuse(args, -n, bounceCones, turn).irradiance;
+    }
+    countWork(WORK_TEXTURE_SAMPLES, vxgiFetches);
+  }
+#endif
+#if !VXGI_AO_MODE
+  front = sanitize(front, HALF_MAX);
+  back = sanitize(back, HALF_MAX);
+#endif
+  int perDirection = draw.scratchLayout.y;  // 4 (rgb·w, w) or 1 (w, AO mode)
   for (int k = k0; k <= k1; ++k) {
     ivec3 voxel = c;
     voxel[gAxis] = k;

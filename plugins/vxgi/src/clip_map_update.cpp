@@ -58,6 +58,13 @@ int32_t movedObjectMargin(float thickness) {
   return 2 + int32_t(std::ceil(behind));
 }
 
+void VoxelizationPlan::addBox(uint32_t level, VoxelBox box) {
+  const VoxelBox whole = layout.levelBox(level);
+  box.min = glm::max(box.min, whole.min);
+  box.max = glm::min(box.max, whole.max);
+  vxgi::addBox(boxes.at(level), box);
+}
+
 bool VoxelizationPlan::empty() const {
   for (const auto& level : boxes)
     if (!level.empty()) return false;
@@ -93,22 +100,24 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
   p.lights = scene.revision(SceneChange::Light);
   const uint32_t levels = layout.format().stackLevels;
   p.boxes.resize(levels);
-  auto everything = [&](std::string why) {
+  auto everything = [&](std::string why, bool fresh = false) {
     for (uint32_t l = 0; l < levels; ++l) p.boxes[l] = {layout.levelBox(l)};
     p.reason = std::move(why);
+    p.fresh = fresh;
     return p;
   };
   if (!committed_ || !(committed_->format() == layout.format()) ||
       committed_->voxelSize0() != layout.voxelSize0())
-    return everything("clip-map created");
+    return everything("clip-map created", true);
+  if (scene_ != &scene) return everything("new scene", true);
   if (!forced.empty()) return everything(std::string(forced));
-  if (scene_ != &scene) return everything("new scene");
   // Scene edits first: the settings key also hashes per-object flags, and an edit in the
-  // outliner should be reported as the edit it is.
-  if (scene.revision(SceneChange::Geometry) != geometry_) return everything("geometry changed");
-  if (scene.revision(SceneChange::Material) != materials_) return everything("materials changed");
-  if (scene.revision(SceneChange::Light) != lights_) return everything("lights changed");
-  if (settingsKey != settingsKey_) return everything("voxelization settings changed");
+  // outliner should be reported as the edit it is. Each may change the light everywhere
+  // (a light switched off), so nothing held may be gathered from.
+  if (scene.revision(SceneChange::Geometry) != geometry_) return everything("geometry changed", true);
+  if (scene.revision(SceneChange::Material) != materials_) return everything("materials changed", true);
+  if (scene.revision(SceneChange::Light) != lights_) return everything("lights changed", true);
+  if (settingsKey != settingsKey_) return everything("voxelization settings changed", true);
 
   std::vector<std::string> why;
   // The anchor moved: each level voxelizes only the slabs that came into view.
@@ -122,7 +131,7 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
   // Moved objects: where they were and where they are now.
   if (scene.revision(SceneChange::Transform) != 0) {
     auto changes = scene.changesSince(sceneRevision_);
-    if (!changes) return everything("too many scene changes to track");
+    if (!changes) return everything("too many scene changes to track", true);
     size_t movedObjects = 0;
     for (const SceneChangeRecord& c : *changes) {
       if (c.kind != SceneChange::Transform) continue;

@@ -32,7 +32,18 @@ struct VoxelizationPlan {
   /// Per level: whether its brick list and resolve run (ClipMapUpdate::decideResolves):
   /// a level re-voxelized whole that draws nothing and holds nothing to clear need not.
   std::vector<bool> resolves;
+  /// Nothing the textures hold may be gathered from (multi-bounce): the clip-map was just
+  /// created or re-placed at another voxel size, the scene is new, or what changed (geometry,
+  /// materials, lights, voxelization settings) may change the light everywhere. A moved
+  /// object, a scroll or r.VXGI.ForceFullVoxelization is not fresh: what the voxels held
+  /// is the light around them a moment ago.
+  bool fresh = false;
+  /// Multi-bounce: diffuse cones each voxelized surface gathers its indirect light with
+  /// from the clip-map as it stands (voxelize.frag); 0 for none.
+  uint32_t bounceCones = 0;
   bool empty() const;
+  /// Adds `box` (clipped to the level) to the level's boxes, keeping them disjoint.
+  void addBox(uint32_t level, VoxelBox box);
   /// The level is voxelized whole (one box, the level's).
   bool wholeLevel(uint32_t level) const;
   uint64_t voxels() const;

@@ -104,6 +104,7 @@ ClipGuardCopies clipGuardCopies(const ClipMapFormat& format) {
 struct VoxelizePush {
   glm::ivec4 regionMin, regionMax, innerMin, innerMax, scratchLayout;
   glm::vec4 ambient;  // rgb: constant irradiance added; w: light count
+  glm::vec4 bounce;   // x: gather cones (0: none), y: step factor, z: range (m), w: normal offset
 };
 static_assert(sizeof(VoxelizePush) <= 112);
 
@@ -214,7 +215,8 @@ void addConstantsPass(RenderGraph& graph, ClipMapHandles& handles, const ClipMap
 
 void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
                            ClipMapHandles& handles, const VoxelizationPlan& plan,
-                           std::shared_ptr<VoxelizationRecord> record, std::function<void()> committed) {
+                           std::shared_ptr<VoxelizationRecord> record, std::function<void()> committed,
+                           const std::string& prefix) {
   Blackboard& bb = graph.blackboard();
   const std::filesystem::path shaders = settings.shaders;  // record callbacks capture values
   const ClipMapLayout& layout = plan.layout;
@@ -243,9 +245,14 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   const float storageScale = settings.emittanceStorageScale.get();
   const glm::vec3 ambient(frame.setting(settings.emittanceAmbient));
   const std::optional<Aabb> testCube = settings.testCubeBounds();
+  // Multi-bounce (voxelize.frag): compiled in when this voxelization gathers (not on a fresh
+  // clip-map's first, which has nothing to gather from yet).
+  const bool multiBounce = plan.bounceCones > 0 && !format.ambientOcclusionMode;
+  const glm::vec4 bounce(float(multiBounce ? plan.bounceCones : 0u), settings.tracingStep.get(),
+                         settings.maxDistance.get(), settings.normalOffset.get());
 
   BufferHandle materialBuffer, lightBuffer;
-  graph.addPass("VXGI.VoxelizationInputs", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+  graph.addPass(prefix + "VoxelizationInputs", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     materialBuffer =
         b.write(b.createBuffer("VXGI.MaterialParams", {materialParams.size() * sizeof(glm::vec4)}),
                 Access::TransferDst);
@@ -264,6 +271,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     // get as far as its resolves.
     const bool clearScratch = handles.scratchUndefined;
     if (clearScratch) handles.scratch = b.write(handles.scratch, Access::TransferDst);
+    // Once: a frame that voxelizes again (multi-bounce) finds them set and zeroed.
+    handles.brickFlagsUndefined = false;
+    handles.scratchUndefined = false;
     b.condition([work, reason] { return work ? PassDecision::run(reason) : PassDecision::skip(reason); });
     BufferHandle mb = materialBuffer, lb = lightBuffer, flags = handles.brickFlags,
                  stored = handles.voxelStored, mipStored = handles.mipVoxelStored;
@@ -311,7 +321,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     // Empty the brick lists of the previous level (or frame). The scratch sums need no
     // clear: the previous resolve zeroed every sum it read.
     graph.addPass(
-        fmt::format("VXGI.ResetBricks.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+        fmt::format("{}ResetBricks.L{}", prefix, level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
           // Each level's own: a level whose brick list and resolve are left out must not
           // cull the next level's passes, which would otherwise write after them (the
           // executor's pool reuses these buffers whichever passes used them).
@@ -344,104 +354,119 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           };
         });
 
-    graph.addPass(fmt::format("VXGI.Voxelize.L{}", level), Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
-      b.useGeometryShaders();  // voxelize.geom reads the clip-map constants
-      // voxelize.geom picks each triangle's dominant axis: without geometry shaders the
-      // level cannot be voxelized, and the report says why.
-      if (frame.device && !frame.device->has(gpu::DeviceFeature::GeometryShader))
-        b.condition([why = frame.device->lacking(gpu::DeviceFeature::GeometryShader)] {
-          return PassDecision::skip(why);
+    graph.addPass(
+        fmt::format("{}Voxelize.L{}", prefix, level), Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
+          b.useGeometryShaders();  // voxelize.geom reads the clip-map constants
+          // voxelize.geom picks each triangle's dominant axis: without geometry shaders the
+          // level cannot be voxelized, and the report says why.
+          if (frame.device && !frame.device->has(gpu::DeviceFeature::GeometryShader))
+            b.condition([why = frame.device->lacking(gpu::DeviceFeature::GeometryShader)] {
+              return PassDecision::skip(why);
+            });
+          scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+          occupancy = b.write(occupancy, Access::StorageReadWrite);
+          TextureDesc targetDesc;
+          targetDesc.format = VK_FORMAT_R8_UNORM;
+          targetDesc.width = targetDesc.height = format.mapSize;
+          TextureHandle target =
+              b.write(b.createTexture(fmt::format("VXGI.VoxelizationTarget.L{}", level), targetDesc),
+                      Access::ColorAttachment);
+          BufferHandle constants = b.read(handles.constants, Access::Uniform);
+          BufferHandle mats = b.read(materialBuffer, Access::StorageRead);
+          BufferHandle flags = b.read(lightBuffer, Access::StorageRead);
+          BufferHandle lights = b.read(bb.buffer(channels::SceneLights), Access::StorageRead);
+          BufferHandle matrices = b.read(bb.buffer(channels::ShadowMatrices), Access::StorageRead);
+          TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
+          // Multi-bounce: the fragments gather from the clip-map as it stands (the finer levels
+          // already this frame's).
+          std::vector<TextureHandle> gatherFrom;
+          if (multiBounce)
+            for (TextureHandle t : handles.clip) gatherFrom.push_back(b.read(t, Access::Sampled));
+          b.condition(decide);
+          TextureHandle scratchHandle = scratchTexture;
+          BufferHandle occupied = occupancy;
+          return [=](PassContext& ctx) {
+            gpu::GraphicsPipelineDesc pd;
+            pd.vertex = shader(shaders, "voxelize.vert", format);
+            pd.geometry = shader(shaders, "voxelize.geom", format);
+            pd.fragment = shader(shaders, "voxelize.frag", format, "VXGI_MULTI_BOUNCE", multiBounce ? 1 : 0);
+            pd.colorFormats = {VK_FORMAT_R8_UNORM};
+            pd.depthTest = false;
+            pd.depthWrite = false;
+            pd.cullMode = VK_CULL_MODE_NONE;  // both windings: the projection may mirror a triangle
+            const gpu::Pipeline& pipeline = ctx.pipelines().graphics(pd);
+            gpu::Bindings common;
+            common.buffer("SceneInstances", ctx.scene().instances())
+                .buffer("SceneMaterials", ctx.scene().materials())
+                .buffer("clipMap", constants)
+                .buffer("VxgiMaterialParams", mats)
+                .buffer("VxgiLightFlags", flags)
+                .buffer("SceneLights", lights)
+                .buffer("ShadowMatrices", matrices)
+                // Without shadow maps (no light casts shadows) lights carry no shadow layer and
+                // never read it, but the binding must still be a depth array.
+                .textureOr("shadowMaps", shadows, gpu::FallbackTexture::FarDepth2DArray,
+                           gpu::SamplerKind::ShadowCompare)
+                .storage("scratch", scratchHandle)
+                .buffer("VxgiBrickOccupancy", occupied);
+            for (size_t t = 0; t < gatherFrom.size(); ++t)
+              common.texture(fmt::format("voxelsClip{}", t), gatherFrom[t], gpu::SamplerKind::LinearRepeat);
+            ctx.beginRendering({.colors = {{target, std::nullopt}}});
+            uint64_t triangles = 0;
+            for (size_t i = 0; i < boxes.size(); ++i) {
+              VoxelizePush push{
+                  glm::ivec4(boxes[i].min, int32_t(level)),
+                  glm::ivec4(boxes[i].max, 0),
+                  glm::ivec4(inner.min, 0),
+                  glm::ivec4(inner.max, 0),
+                  glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
+                  glm::vec4(ambient, float(lightCount)),
+                  bounce};
+              triangles += ctx.drawScene(
+                  pipeline, common,
+                  [&](const gpu::GpuDraw& d) {
+                    return d.material < voxelized.size() && voxelized[d.material] &&
+                           drawFilter.draws(d.worldBounds, i);
+                  },
+                  &push, sizeof(push), meshError);
+            }
+            ctx.endRendering();
+            if (record->triangles.size() <= level) record->triangles.resize(level + 1);
+            record->triangles[level] = triangles;
+          };
         });
-      scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
-      occupancy = b.write(occupancy, Access::StorageReadWrite);
-      TextureDesc targetDesc;
-      targetDesc.format = VK_FORMAT_R8_UNORM;
-      targetDesc.width = targetDesc.height = format.mapSize;
-      TextureHandle target =
-          b.write(b.createTexture(fmt::format("VXGI.VoxelizationTarget.L{}", level), targetDesc),
-                  Access::ColorAttachment);
-      BufferHandle constants = b.read(handles.constants, Access::Uniform);
-      BufferHandle mats = b.read(materialBuffer, Access::StorageRead);
-      BufferHandle flags = b.read(lightBuffer, Access::StorageRead);
-      BufferHandle lights = b.read(bb.buffer(channels::SceneLights), Access::StorageRead);
-      BufferHandle matrices = b.read(bb.buffer(channels::ShadowMatrices), Access::StorageRead);
-      TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
-      b.condition(decide);
-      TextureHandle scratchHandle = scratchTexture;
-      BufferHandle occupied = occupancy;
-      return [=](PassContext& ctx) {
-        gpu::GraphicsPipelineDesc pd;
-        pd.vertex = shader(shaders, "voxelize.vert", format);
-        pd.geometry = shader(shaders, "voxelize.geom", format);
-        pd.fragment = shader(shaders, "voxelize.frag", format);
-        pd.colorFormats = {VK_FORMAT_R8_UNORM};
-        pd.depthTest = false;
-        pd.depthWrite = false;
-        pd.cullMode = VK_CULL_MODE_NONE;  // both windings: the projection may mirror a triangle
-        const gpu::Pipeline& pipeline = ctx.pipelines().graphics(pd);
-        gpu::Bindings common;
-        common.buffer("SceneInstances", ctx.scene().instances())
-            .buffer("SceneMaterials", ctx.scene().materials())
-            .buffer("clipMap", constants)
-            .buffer("VxgiMaterialParams", mats)
-            .buffer("VxgiLightFlags", flags)
-            .buffer("SceneLights", lights)
-            .buffer("ShadowMatrices", matrices)
-            // Without shadow maps (no light casts shadows) lights carry no shadow layer and
-            // never read it, but the binding must still be a depth array.
-            .textureOr("shadowMaps", shadows, gpu::FallbackTexture::FarDepth2DArray,
-                       gpu::SamplerKind::ShadowCompare)
-            .storage("scratch", scratchHandle)
-            .buffer("VxgiBrickOccupancy", occupied);
-        ctx.beginRendering({.colors = {{target, std::nullopt}}});
-        uint64_t triangles = 0;
-        for (size_t i = 0; i < boxes.size(); ++i) {
-          VoxelizePush push{glm::ivec4(boxes[i].min, int32_t(level)),
-                            glm::ivec4(boxes[i].max, 0),
-                            glm::ivec4(inner.min, 0),
-                            glm::ivec4(inner.max, 0),
-                            glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
-                            glm::vec4(ambient, float(lightCount))};
-          triangles += ctx.drawScene(
-              pipeline, common,
-              [&](const gpu::GpuDraw& d) {
-                return d.material < voxelized.size() && voxelized[d.material] &&
-                       drawFilter.draws(d.worldBounds, i);
-              },
-              &push, sizeof(push), meshError);
-        }
-        ctx.endRendering();
-        if (record->triangles.size() <= level) record->triangles.resize(level + 1);
-        record->triangles[level] = triangles;
-      };
-    });
 
     if (testCube)
-      graph.addPass(fmt::format("VXGI.TestCube.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-        scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
-        occupancy = b.write(occupancy, Access::StorageReadWrite);
-        BufferHandle constants = b.read(handles.constants, Access::Uniform);
-        b.condition(decide);
-        TextureHandle sums = scratchTexture;
-        BufferHandle occupied = occupancy;
-        const Aabb cube = *testCube;
-        return [=](PassContext& ctx) {
-          const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader(shaders, "test_cube.comp", format));
-          gpu::Bindings bind;
-          bind.buffer("clipMap", constants).storage("scratch", sums).buffer("VxgiBrickOccupancy", occupied);
-          for (const VoxelBox& box : boxes) {
-            const glm::ivec3 size = box.max - box.min;
-            TestCubePush push{glm::ivec4(box.min, int32_t(level)),
+      graph.addPass(fmt::format("{}TestCube.L{}", prefix, level), Queue::Compute,
+                    [&](PassBuilder& b) -> RecordFn {
+                      scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+                      occupancy = b.write(occupancy, Access::StorageReadWrite);
+                      BufferHandle constants = b.read(handles.constants, Access::Uniform);
+                      b.condition(decide);
+                      TextureHandle sums = scratchTexture;
+                      BufferHandle occupied = occupancy;
+                      const Aabb cube = *testCube;
+                      return [=](PassContext& ctx) {
+                        const gpu::Pipeline& pipeline =
+                            ctx.pipelines().compute(shader(shaders, "test_cube.comp", format));
+                        gpu::Bindings bind;
+                        bind.buffer("clipMap", constants)
+                            .storage("scratch", sums)
+                            .buffer("VxgiBrickOccupancy", occupied);
+                        for (const VoxelBox& box : boxes) {
+                          const glm::ivec3 size = box.max - box.min;
+                          TestCubePush push{
+                              glm::ivec4(box.min, int32_t(level)),
                               glm::ivec4(size, 0),
                               glm::ivec4(inner.min, 0),
                               glm::ivec4(inner.max, 0),
                               glm::ivec4(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0),
                               glm::vec4(cube.min, 0.0f),
                               glm::vec4(cube.max, 0.0f)};
-            ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
-          }
-        };
-      });
+                          ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
+                        }
+                      };
+                    });
 
     // A level resolved whole (a full re-voxelization) need only write the bricks that
     // received sums or may hold something from before: brick_list.comp lists them, and the
@@ -455,75 +480,78 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         return PassDecision::skip("whole level re-voxelized: nothing drawn, nothing held to clear");
       return decide();
     };
-    graph.addPass(fmt::format("VXGI.BrickList.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-      BufferHandle occupied = b.read(occupancy, Access::StorageRead);
-      BufferHandle constants = b.read(handles.constants, Access::Uniform);
-      handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
-      if (wholeLevel) {
-        resolveArguments = b.write(resolveArguments, Access::StorageReadWrite);
-        brickList = b.write(brickList, Access::StorageReadWrite);
-      }
-      b.condition(decideResolve);
-      BufferHandle flags = handles.brickFlags, arguments = resolveArguments, list = brickList;
-      return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(
-            shader(shaders, "brick_list.comp", format, "VXGI_WHOLE_LEVEL", wholeLevel ? 1 : 0));
-        gpu::Bindings bind;
-        bind.buffer("clipMap", constants)
-            .buffer("VxgiBrickOccupancy", occupied)
-            .buffer("VxgiBrickFlags", flags);
-        if (wholeLevel) bind.buffer("VxgiResolveArguments", arguments).buffer("VxgiBrickList", list);
-        const glm::ivec2 push{int32_t(level), int32_t(bricksPerGroup)};
-        ctx.dispatchThreads(pipeline, bind, glm::uvec3(bricksPerLevel, 1, 1), push);
-      };
-    });
+    graph.addPass(fmt::format("{}BrickList.L{}", prefix, level), Queue::Compute,
+                  [&](PassBuilder& b) -> RecordFn {
+                    BufferHandle occupied = b.read(occupancy, Access::StorageRead);
+                    BufferHandle constants = b.read(handles.constants, Access::Uniform);
+                    handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
+                    if (wholeLevel) {
+                      resolveArguments = b.write(resolveArguments, Access::StorageReadWrite);
+                      brickList = b.write(brickList, Access::StorageReadWrite);
+                    }
+                    b.condition(decideResolve);
+                    BufferHandle flags = handles.brickFlags, arguments = resolveArguments, list = brickList;
+                    return [=](PassContext& ctx) {
+                      const gpu::Pipeline& pipeline = ctx.pipelines().compute(
+                          shader(shaders, "brick_list.comp", format, "VXGI_WHOLE_LEVEL", wholeLevel ? 1 : 0));
+                      gpu::Bindings bind;
+                      bind.buffer("clipMap", constants)
+                          .buffer("VxgiBrickOccupancy", occupied)
+                          .buffer("VxgiBrickFlags", flags);
+                      if (wholeLevel)
+                        bind.buffer("VxgiResolveArguments", arguments).buffer("VxgiBrickList", list);
+                      const glm::ivec2 push{int32_t(level), int32_t(bricksPerGroup)};
+                      ctx.dispatchThreads(pipeline, bind, glm::uvec3(bricksPerLevel, 1, 1), push);
+                    };
+                  });
 
-    graph.addPass(fmt::format("VXGI.Resolve.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-      // Read, and zeroed where it held sums, for the next level or frame.
-      scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
-      TextureHandle sums = scratchTexture;
-      BufferHandle constants = b.read(handles.constants, Access::Uniform);
-      BufferHandle arguments, list, occupied;
-      if (wholeLevel) {
-        arguments = b.read(resolveArguments, Access::Indirect);
-        list = b.read(brickList, Access::StorageRead);
-        occupied = b.read(occupancy, Access::StorageRead);  // which voxels have sums to read
-      }
-      // The downsampled bit says where air must be stored over what downsampling left.
-      BufferHandle flags = b.read(handles.brickFlags, Access::StorageRead);
-      handles.voxelStored = b.write(handles.voxelStored, Access::StorageReadWrite);
-      writeAll(b, handles.clip);
-      b.condition(decideResolve);
-      const ClipMapHandles h = handles;
-      return [=](PassContext& ctx) {
-        gpu::ShaderSource source =
-            shader(shaders, "resolve.comp", format, "VXGI_RESOLVE_BRICK_LIST", wholeLevel ? 1 : 0);
-        // A brick's voxels with sums, a lane each: one SIMD group of lavapipe's (8 lanes)
-        // takes them in turn; a GPU's workgroup, a lane per voxel, takes a brick at once.
-        source.defines.emplace_back("VXGI_RESOLVE_LANES", cpuDevice ? "8" : "64");
-        const gpu::Pipeline& pipeline = ctx.pipelines().compute(source);
-        gpu::Bindings bind;
-        bind.buffer("clipMap", constants)
-            .storage("scratch", sums)
-            .buffer("VxgiBrickFlags", flags)
-            .buffer("VxgiVoxelStored", h.voxelStored);
-        bindStorage(bind, "voxelsOut", h.clip);
-        const glm::ivec4 scratchPush(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0);
-        if (wholeLevel) {
-          bind.buffer("VxgiBrickList", list).buffer("VxgiBrickOccupancy", occupied);
-          ResolvePush push{glm::ivec4(0, 0, 0, int32_t(level)), glm::ivec4(0), scratchPush, storageScale,
-                           int32_t(bricksPerGroup)};
-          ctx.dispatchIndirect(pipeline, bind, arguments, push);
-          return;
-        }
-        for (const VoxelBox& box : boxes) {
-          const glm::ivec3 size = box.max - box.min;
-          ResolvePush push{glm::ivec4(box.min, int32_t(level)), glm::ivec4(size, 0), scratchPush,
-                           storageScale, 1};
-          ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
-        }
-      };
-    });
+    graph.addPass(
+        fmt::format("{}Resolve.L{}", prefix, level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+          // Read, and zeroed where it held sums, for the next level or frame.
+          scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+          TextureHandle sums = scratchTexture;
+          BufferHandle constants = b.read(handles.constants, Access::Uniform);
+          BufferHandle arguments, list, occupied;
+          if (wholeLevel) {
+            arguments = b.read(resolveArguments, Access::Indirect);
+            list = b.read(brickList, Access::StorageRead);
+            occupied = b.read(occupancy, Access::StorageRead);  // which voxels have sums to read
+          }
+          // The downsampled bit says where air must be stored over what downsampling left.
+          BufferHandle flags = b.read(handles.brickFlags, Access::StorageRead);
+          handles.voxelStored = b.write(handles.voxelStored, Access::StorageReadWrite);
+          writeAll(b, handles.clip);
+          b.condition(decideResolve);
+          const ClipMapHandles h = handles;
+          return [=](PassContext& ctx) {
+            gpu::ShaderSource source =
+                shader(shaders, "resolve.comp", format, "VXGI_RESOLVE_BRICK_LIST", wholeLevel ? 1 : 0);
+            // A brick's voxels with sums, a lane each: one SIMD group of lavapipe's (8 lanes)
+            // takes them in turn; a GPU's workgroup, a lane per voxel, takes a brick at once.
+            source.defines.emplace_back("VXGI_RESOLVE_LANES", cpuDevice ? "8" : "64");
+            const gpu::Pipeline& pipeline = ctx.pipelines().compute(source);
+            gpu::Bindings bind;
+            bind.buffer("clipMap", constants)
+                .storage("scratch", sums)
+                .buffer("VxgiBrickFlags", flags)
+                .buffer("VxgiVoxelStored", h.voxelStored);
+            bindStorage(bind, "voxelsOut", h.clip);
+            const glm::ivec4 scratchPush(int32_t(scratch.perRow), format.ambientOcclusionMode ? 1 : 4, 0, 0);
+            if (wholeLevel) {
+              bind.buffer("VxgiBrickList", list).buffer("VxgiBrickOccupancy", occupied);
+              ResolvePush push{glm::ivec4(0, 0, 0, int32_t(level)), glm::ivec4(0), scratchPush, storageScale,
+                               int32_t(bricksPerGroup)};
+              ctx.dispatchIndirect(pipeline, bind, arguments, push);
+              return;
+            }
+            for (const VoxelBox& box : boxes) {
+              const glm::ivec3 size = box.max - box.min;
+              ResolvePush push{glm::ivec4(box.min, int32_t(level)), glm::ivec4(size, 0), scratchPush,
+                               storageScale, 1};
+              ctx.dispatchThreads(pipeline, bind, glm::uvec3(size), push);
+            }
+          };
+        });
 
     if (level == 0) continue;
     // The inner box's bricks whose finer bricks hold something, or that hold downsampled
@@ -533,7 +561,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     const glm::ivec3 innerBricks = ((inner.max - 1) >> 2) - (inner.min >> 2) + 1;
     static_assert(kBrickVoxels == 4);
     graph.addPass(
-        fmt::format("VXGI.DownsampleList.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+        fmt::format("{}DownsampleList.L{}", prefix, level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
           BufferHandle constants = b.read(handles.constants, Access::Uniform);
           handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
           downsampleArguments = b.write(downsampleArguments, Access::StorageReadWrite);
@@ -558,34 +586,35 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           };
         });
 
-    graph.addPass(fmt::format("VXGI.Downsample.L{}", level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-      BufferHandle constants = b.read(handles.constants, Access::Uniform);
-      BufferHandle arguments = b.read(downsampleArguments, Access::Indirect);
-      BufferHandle list = b.read(downsampleBricks, Access::StorageRead);
-      writeAll(b, handles.clip);
-      handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
-      BufferHandle stored =
-          b.read(handles.voxelStored, Access::StorageRead);  // which children hold something
-      b.condition([work, reason] {
-        return work ? PassDecision::run("the finer level changed") : PassDecision::skip(reason);
-      });
-      const ClipMapHandles h = handles;
-      return [=](PassContext& ctx) {
-        const gpu::Pipeline& pipeline =
-            ctx.pipelines().compute(downsampleShader(shaders, format, 0, cpuDevice));
-        gpu::Bindings bind;
-        bind.buffer("clipMap", constants)
-            .buffer("VxgiBrickFlags", h.brickFlags)
-            .buffer("VxgiDownsampleBricks", list)
-            .buffer("VxgiVoxelStored", stored);
-        // Source and destination are the same textures, different levels of the stack.
-        bindStorage(bind, "voxelsSrc", h.clip);
-        bindStorage(bind, "voxelsDst", h.clip);
-        DownsamplePush push{glm::ivec4(inner.min, int32_t(level)),
-                            glm::ivec4(innerSize, int32_t(bricksPerGroup))};
-        ctx.dispatchIndirect(pipeline, bind, arguments, push);
-      };
-    });
+    graph.addPass(fmt::format("{}Downsample.L{}", prefix, level), Queue::Compute,
+                  [&](PassBuilder& b) -> RecordFn {
+                    BufferHandle constants = b.read(handles.constants, Access::Uniform);
+                    BufferHandle arguments = b.read(downsampleArguments, Access::Indirect);
+                    BufferHandle list = b.read(downsampleBricks, Access::StorageRead);
+                    writeAll(b, handles.clip);
+                    handles.brickFlags = b.write(handles.brickFlags, Access::StorageReadWrite);
+                    BufferHandle stored =
+                        b.read(handles.voxelStored, Access::StorageRead);  // which children hold something
+                    b.condition([work, reason] {
+                      return work ? PassDecision::run("the finer level changed") : PassDecision::skip(reason);
+                    });
+                    const ClipMapHandles h = handles;
+                    return [=](PassContext& ctx) {
+                      const gpu::Pipeline& pipeline =
+                          ctx.pipelines().compute(downsampleShader(shaders, format, 0, cpuDevice));
+                      gpu::Bindings bind;
+                      bind.buffer("clipMap", constants)
+                          .buffer("VxgiBrickFlags", h.brickFlags)
+                          .buffer("VxgiDownsampleBricks", list)
+                          .buffer("VxgiVoxelStored", stored);
+                      // Source and destination are the same textures, different levels of the stack.
+                      bindStorage(bind, "voxelsSrc", h.clip);
+                      bindStorage(bind, "voxelsDst", h.clip);
+                      DownsamplePush push{glm::ivec4(inner.min, int32_t(level)),
+                                          glm::ivec4(innerSize, int32_t(bricksPerGroup))};
+                      ctx.dispatchIndirect(pipeline, bind, arguments, push);
+                    };
+                  });
   }
 
   // The pyramid's blocks that may hold something or lie over flagged bricks of the
@@ -612,7 +641,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   uint32_t tail = 1;
   while (tail < mips && (format.mapSize >> (tail + 1)) > tailVoxels) ++tail;
   BufferHandle mipArguments, mipBlocks;
-  graph.addPass("VXGI.MipList", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+  graph.addPass(prefix + "MipList", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     BufferHandle constants = b.read(handles.constants, Access::Uniform);
     BufferHandle levelFlags = b.read(handles.brickFlags, Access::StorageRead);
     handles.mipVoxelStored = b.read(handles.mipVoxelStored, Access::StorageRead);
@@ -649,7 +678,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
     };
   });
 
-  graph.addPass("VXGI.Mips", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+  graph.addPass(prefix + "Mips", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     BufferHandle constants = b.read(handles.constants, Access::Uniform);
     // Source and destination are the same textures: the coarsest level, then each mip,
     // into the pyramid's slab.
@@ -701,7 +730,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   // slice, row (and for the mips column) 0, so a trilinear fetch spans the toroidal seams.
   // Copied here, once for all levels and mips, rather than stored several times by every
   // writer under a per-voxel branch.
-  graph.addPass("VXGI.ClipGuards", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+  graph.addPass(prefix + "ClipGuards", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     for (TextureHandle& h : handles.clip) {
       b.read(h, Access::TransferSrc);
       h = b.write(h, Access::TransferDst);
@@ -726,7 +755,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         }
         ctx.addWork(WorkUnit::TransferBytes, 2u * texelBytes * copies.texels);
       }
-      committed();  // the last pass of a voxelizing frame
+      if (committed) committed();  // the last pass of a voxelizing frame
     };
   });
 }

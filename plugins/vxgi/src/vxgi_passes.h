@@ -31,10 +31,13 @@ struct VoxelizationRecord {
 std::vector<bool> levelDraws(const Scene& scene, const VxgiSettings& settings, const VoxelizationPlan& plan);
 
 /// Voxelizes the plan's boxes level by level, downsamples into coarser levels and the
-/// mip pyramid. `committed` runs (at record time) once the work is recorded.
+/// mip pyramid. `committed` (if any) runs at record time once the work is recorded. Pass
+/// names start with `prefix` ("VXGI."; a frame that voxelizes more than once names its
+/// earlier voxelizations otherwise).
 void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const VxgiSettings& settings,
                            ClipMapHandles& handles, const VoxelizationPlan& plan,
-                           std::shared_ptr<VoxelizationRecord> record, std::function<void()> committed);
+                           std::shared_ptr<VoxelizationRecord> record, std::function<void()> committed,
+                           const std::string& prefix = "VXGI.");
 
 /// Diffuse (or ambient-occlusion) and specular tracing into the GI channels. With the
 /// temporal filter on and sparse tracing, `history` (plugin-owned, outliving the frame)

@@ -10,6 +10,7 @@
 //                    VXGI.SpecularPixels / SpecularTracing — publish the GI channels
 //   DebugView        VXGI.DebugVoxels / VXGI.DebugChannel while r.VXGI.DebugMode ≠ 0
 
+#include "bounce_propagation.h"
 #include "clip_map_textures.h"
 #include "clip_map_update.h"
 #include "vxgi_passes.h"
@@ -56,6 +57,7 @@ class VxgiPlugin final : public Plugin {
     ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseCones", .values = {"4", "8", "16", "32"}, .label = "cones"});
     ctx.addQualityKnob({.cvar = "r.VXGI.TracingStep", .values = {"0.25", "0.5", "1"}, .label = "step"});
     ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseSparsity", .values = {"1", "2", "4"}, .label = "sparse"});
+    ctx.addQualityKnob({.cvar = "r.VXGI.Bounces", .values = {"1", "2", "4", "8"}, .label = "bounces"});
     ctx.addConsoleCommand({.name = "vxgi.Status",
                            .help = "Prints the clip-map's format, placement and memory.",
                            .run = [this](const std::vector<std::string>&) { return status(); }});
@@ -92,6 +94,15 @@ class VxgiPlugin final : public Plugin {
     auto mix = [&key](const auto& value) { key.add(value); };
     mix(settings_.emittanceStorageScale.get());
     mix(frame.setting(settings_.emittanceAmbient));
+    // The multi-bounce gather's cones (voxelize.frag): global values, not a view's
+    // post-process ones, since the voxels do not depend on where the camera is.
+    if (settings_.bounces.get() > 1 && !settings_.ambientOcclusionMode.get()) {
+      mix(settings_.bounces.get());
+      mix(settings_.bounceCones.get());
+      mix(settings_.tracingStep.get());
+      mix(settings_.maxDistance.get());
+      mix(settings_.normalOffset.get());
+    }
     mix(settings_.testCube.get());
     mix(settings_.voxelizationMeshError.get());
     for (const Material& m : frame.scene.materials()) {
@@ -110,7 +121,10 @@ class VxgiPlugin final : public Plugin {
       log::warn("VXGI: {}; keeping the previous clip-map", error);
       format = textures_.format();
     }
-    if (textures_.configure(format)) update_.invalidate();
+    if (textures_.configure(format)) {
+      update_.invalidate();
+      bounces_.reset();
+    }
     const float requested = settings_.voxelSize.get();
     const float voxelSize =
         requested > 0.0f ? requested : automaticVoxelSize(frame.scene.bounds(), format.mapSize);
@@ -140,16 +154,32 @@ class VxgiPlugin final : public Plugin {
       for (auto& boxes : plan.boxes) boxes.clear();
       plan.reason = "no material is used with VXGI voxelization and no test cube";
     }
+    // Multi-bounce: what changed is voxelized again on the next frames (a fresh clip-map
+    // every time in this one), each gathering the bounces the one before left.
+    const uint32_t bounces = format.ambientOcclusionMode ? 1u : uint32_t(settings_.bounces.get());
+    if (!f.anyVoxelized) bounces_.reset();
+    const uint32_t voxelizations = f.anyVoxelized ? bounces_.schedule(plan, bounces) : 1u;
     plan.draws = levelDraws(frame.scene, settings_, plan);
     update_.decideResolves(plan);
     auto committed = std::make_shared<VoxelizationPlan>(plan);
     // Until this frame's voxelization is recorded to its end, its sums may be left in the
     // scratch volume: the next frame would clear it first.
     if (!plan.empty()) textures_.scratchInUse();
-    addVoxelizationPasses(graph, frame, settings_, f.handles, plan, record_, [this, committed] {
-      update_.commit(*committed);
-      textures_.scratchResolved();
-    });
+    const uint32_t cones = bounces > 1 ? uint32_t(settings_.bounceCones.get()) : 0u;
+    for (uint32_t i = 0; i < voxelizations; ++i) {
+      const bool last = i + 1 == voxelizations;
+      VoxelizationPlan pass = plan;
+      pass.bounceCones = plan.fresh && i == 0 ? 0u : cones;  // a fresh clip-map's first: nothing yet
+      // The earlier voxelizations of a frame are named by the bounces their emittance holds.
+      const std::string prefix = last ? "VXGI." : fmt::format("VXGI.Bounce{}.", i);
+      std::function<void()> done;
+      if (last)
+        done = [this, committed] {
+          update_.commit(*committed);
+          textures_.scratchResolved();
+        };
+      addVoxelizationPasses(graph, frame, settings_, f.handles, pass, record_, done, prefix);
+    }
     lastPlanReason_ = plan.reason;
     lastLayout_ = layout;
     f.voxelsChanged = !plan.empty();
@@ -194,6 +224,7 @@ class VxgiPlugin final : public Plugin {
   VxgiSettings settings_;
   ClipMapTextures textures_;
   ClipMapUpdate update_;
+  BouncePropagation bounces_;
   std::optional<ClipMapLayout> lastLayout_;
   std::string lastPlanReason_ = "not rendered yet";
   std::shared_ptr<VoxelizationRecord> record_ = std::make_shared<VoxelizationRecord>();

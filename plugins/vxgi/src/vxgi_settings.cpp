@@ -140,6 +140,27 @@ void VxgiSettings::declare(PluginContext& ctx) {
        .max = 4.0,
        .ini = {"VXGI", "VxgiVoxelizationMeshError"},
        .category = clip});
+  bounces = ctx.addCVar<int32_t>(
+      {.name = "r.VXGI.Bounces",
+       .defaultValue = 4,
+       .help = "Bounces of indirect light (1..16). 1 is the seed's one bounce; each more is one more "
+               "voxelization of what changed, in which every surface also reflects the indirect light "
+               "cones gather at it from the clip-map as it stands.",
+       .min = 1,
+       .max = 16,
+       .outOfRange = RangePolicy::Clamp,
+       .ini = {"VXGI", "VxgiBounces"},
+       .category = clip});
+  bounceCones = ctx.addCVar<int32_t>(
+      {.name = "r.VXGI.BounceCones",
+       .defaultValue = 4,
+       .help = "Diffuse cones each voxelized surface gathers its indirect light with when "
+               "r.VXGI.Bounces > 1 (1..16; each voxel turns them its own way).",
+       .min = 1,
+       .max = 16,
+       .outOfRange = RangePolicy::Clamp,
+       .ini = {"VXGI", "VxgiBounceCones"},
+       .category = clip});
   emittanceAmbient = ctx.addCVar<float>(
       {.name = "r.VXGI.EmittanceAmbient",
        .defaultValue = 0.0f,

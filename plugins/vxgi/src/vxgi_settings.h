@@ -35,6 +35,8 @@ struct VxgiSettings {
   CVarRef<std::string> testCube;         ///< the seed's built-in test scene: "x y z size" or empty
   CVarRef<bool> forceFullVoxelization;   ///< benchmarks: every frame voxelizes every level
   CVarRef<float> voxelizationMeshError;  ///< low-detail meshes: tolerated deviation, in voxels of the level
+  CVarRef<int32_t> bounces;              ///< r.VXGI.Bounces: 1 the seed's one bounce; more re-voxelize
+  CVarRef<int32_t> bounceCones;          ///< r.VXGI.BounceCones: the voxelizer's gather per surface
   // Tracing (post-process-volume settings where users tune them per area).
   CVarRef<bool> diffuseEnable, specularEnable;
   CVarRef<int32_t> diffuseCones, diffuseSparsity;

@@ -159,6 +159,34 @@ TEST(ClipMapUpdate, AForcedPlanVoxelizesEverythingEveryFrame) {
   EXPECT_TRUE(update.plan(scene, layout, 1u).empty());
 }
 
+// Multi-bounce gathers from what the textures hold unless the plan is fresh: a new
+// clip-map, a new scene or a change of the light everywhere must not reuse the old light;
+// a forced re-voxelization or a scroll gathers from the light around it a moment ago.
+TEST(ClipMapUpdate, OnlyPlansWhoseOldLightIsNoStartAreFresh) {
+  Scene scene;
+  const ClipMapFormat f{.mapSize = 32, .stackLevels = 3};
+  const ClipMapLayout layout = ClipMapLayout::place(f, 0.1f, {0, 0, 0});
+  ClipMapUpdate update;
+  VoxelizationPlan created = update.plan(scene, layout, 1u);
+  EXPECT_TRUE(created.fresh) << created.reason;
+  update.commit(created);
+  EXPECT_FALSE(update.plan(scene, layout, 1u).fresh);
+  VoxelizationPlan forced = update.plan(scene, layout, 1u, 2, "forced");
+  EXPECT_FALSE(forced.fresh);
+  EXPECT_EQ(forced.reason, "forced");
+  VoxelizationPlan settings = update.plan(scene, layout, 2u);
+  EXPECT_TRUE(settings.fresh) << settings.reason;
+  EXPECT_EQ(settings.reason, "voxelization settings changed");
+  VoxelizationPlan scrolled = update.plan(scene, ClipMapLayout::place(f, 0.1f, {0.4f, 0, 0}), 1u);
+  EXPECT_FALSE(scrolled.empty());
+  EXPECT_FALSE(scrolled.fresh) << scrolled.reason;
+  Scene other;
+  VoxelizationPlan newScene = update.plan(other, layout, 1u);
+  EXPECT_TRUE(newScene.fresh);
+  EXPECT_EQ(newScene.reason, "new scene");
+  EXPECT_TRUE(update.plan(scene, ClipMapLayout::place(f, 0.2f, {0, 0, 0}), 1u).fresh) << "another voxel size";
+}
+
 TEST(ClipMapUpdate, SubVoxelCameraMovesVoxelizeNothing) {
   Scene scene;
   ClipMapFormat f{.mapSize = 32, .stackLevels = 3};
