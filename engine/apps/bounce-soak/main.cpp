@@ -17,7 +17,9 @@
 //
 // Memory is judged over the second half of the run, when every state of the animation
 // has been seen: the least-squares slope of the RSS, the RSS growth, and the growth of
-// the device memory allocated through the engine (gpu::Device::allocatedBytes).
+// the device memory allocated through the engine (gpu::Device::allocatedBytes), as its
+// peak over the second half against its peak over the first (the transient pool frees and
+// takes back what rarer frames need).
 // Exit status: 0 pass, 1 no usable Vulkan device, 2 bad arguments or input, 3 Vulkan
 // validation errors (--validation or $BOUNCE_VALIDATION), 4 NaN/Inf, a failed frame or
 // memory growth over the limits.
@@ -157,7 +159,8 @@ std::optional<bounce::soak::TechniqueSoak> soak(const Options& o, const std::str
     r.rssHalf = uint64_t(samples.rssBytes[half]);
     r.rssEnd = uint64_t(samples.rssBytes.back());
     r.deviceBytesStart = uint64_t(samples.deviceBytes.front());
-    r.deviceBytesHalf = uint64_t(samples.deviceBytes[half]);
+    r.deviceBytesFirstPeak =
+        uint64_t(*std::max_element(samples.deviceBytes.begin(), samples.deviceBytes.begin() + long(half)));
     r.deviceBytesEnd = uint64_t(samples.deviceBytes.back());
     r.deviceBytesPeak =
         uint64_t(*std::max_element(samples.deviceBytes.begin() + long(half), samples.deviceBytes.end()));
@@ -188,8 +191,9 @@ int main(int argc, char** argv) {
       "Largest RSS slope over the second half, KiB per 1000 frames (default 64; < 0: not checked)");
   app.add_option("--max-rss-growth", o.limits.maxRssGrowthMiB,
                  "Largest RSS growth over the second half in MiB (default: not checked)");
-  app.add_option("--max-device-growth", o.limits.maxDeviceGrowth,
-                 "Largest growth of device memory over the second half in bytes (default 0)");
+  app.add_option(
+      "--max-device-growth", o.limits.maxDeviceGrowth,
+      "Largest growth of device memory's peak from the first half to the second, in bytes (default 0)");
   app.add_option("--time-limit", o.timeLimit,
                  "Stop each technique after this many seconds (the table shows the frames rendered)");
   app.add_option("--progress", o.progress, "Print a progress line every N frames (0: never)");

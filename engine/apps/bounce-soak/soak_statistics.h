@@ -38,8 +38,12 @@ struct TechniqueSoak {
   uint64_t nonFinite = 0;         ///< NaN/Inf values over all outputs and frames
   std::string firstNonFinite;     ///< where the first was seen ("frame 12 radiance: 3 values")
   uint64_t deviceBytesStart = 0;  ///< after the first frame
-  uint64_t deviceBytesHalf = 0;   ///< at the start of the second half
-  uint64_t deviceBytesPeak = 0;   ///< largest over the second half
+  /// Largest over the first half. Not the value at the half: the executor's transient pool
+  /// frees what went unused for a few frames and takes it again when a rarer frame (several
+  /// voxelizations in one, say) comes back, so its size dips and recovers within the
+  /// animation's cycle; a leak instead raises the high-water mark.
+  uint64_t deviceBytesFirstPeak = 0;
+  uint64_t deviceBytesPeak = 0;  ///< largest over the second half
   uint64_t deviceBytesEnd = 0;
   uint64_t rssStart = 0;  ///< after the first frame
   uint64_t rssHalf = 0;

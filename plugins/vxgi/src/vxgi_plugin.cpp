@@ -1,11 +1,13 @@
 // VXGI: voxel global illumination from a clip-map of opacity and emittance, by cone
-// tracing (seeds 000 and 001). One bounce of indirect diffuse and specular light, or
-// voxel ambient occlusion. Uses only the public plugin API.
+// tracing (seeds 000 and 001). Indirect diffuse and specular light, one bounce as in the
+// seed or (r.VXGI.Bounces) several, each voxelization gathering the bounces the last one
+// left; or voxel ambient occlusion. Uses only the public plugin API.
 //
 // Per frame:
 //   AfterGBuffer     VXGI.Constants, VXGI.Voxelize.Ln / Resolve.Ln / Downsample.Ln,
 //                    VXGI.MipList / Mips / ClipGuards — only what the scene and camera
-//                    movement call for
+//                    movement call for (a fresh start with several bounces runs them once
+//                    per bounce, the earlier ones named VXGI.Bounce<k>.*)
 //   IndirectDiffuse  VXGI.DiffuseTracing (+ VXGI.DiffuseInterpolation when sparse),
 //                    VXGI.SpecularPixels / SpecularTracing — publish the GI channels
 //   DebugView        VXGI.DebugVoxels / VXGI.DebugChannel while r.VXGI.DebugMode ≠ 0
@@ -57,7 +59,7 @@ class VxgiPlugin final : public Plugin {
     ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseCones", .values = {"4", "8", "16", "32"}, .label = "cones"});
     ctx.addQualityKnob({.cvar = "r.VXGI.TracingStep", .values = {"0.25", "0.5", "1"}, .label = "step"});
     ctx.addQualityKnob({.cvar = "r.VXGI.DiffuseSparsity", .values = {"1", "2", "4"}, .label = "sparse"});
-    ctx.addQualityKnob({.cvar = "r.VXGI.Bounces", .values = {"1", "2", "4", "8"}, .label = "bounces"});
+    ctx.addQualityKnob({.cvar = "r.VXGI.Bounces", .values = {"1", "2", "3", "4", "8"}, .label = "bounces"});
     ctx.addConsoleCommand({.name = "vxgi.Status",
                            .help = "Prints the clip-map's format, placement and memory.",
                            .run = [this](const std::vector<std::string>&) { return status(); }});
@@ -115,6 +117,19 @@ class VxgiPlugin final : public Plugin {
     return key.value();
   }
 
+  // Whether any voxelized surface can emit (a flagged light, an emissive voxelized material,
+  // the constant ambient or the test cube): the light that bounces.
+  bool voxelizesLight(const FrameContext& frame) const {
+    if (settings_.testCubeBounds() || frame.setting(settings_.emittanceAmbient) > 0.0f) return true;
+    for (const Light& l : frame.scene.lights())
+      if (settings_.indirectLighting.of(l) &&
+          glm::any(glm::greaterThan(l.radiometricIntensity(), glm::vec3(0.0f))))
+        return true;
+    for (const Material& m : frame.scene.materials())
+      if (settings_.voxelize.of(m) && m.emissive()) return true;
+    return false;
+  }
+
   void voxelization(RenderGraph& graph, const FrameContext& frame) {
     ClipMapFormat format = settings_.format();
     if (std::string error = validate(format); !error.empty()) {
@@ -154,9 +169,11 @@ class VxgiPlugin final : public Plugin {
       for (auto& boxes : plan.boxes) boxes.clear();
       plan.reason = "no material is used with VXGI voxelization and no test cube";
     }
-    // Multi-bounce: what changed is voxelized again on the next frames (a fresh clip-map
-    // every time in this one), each gathering the bounces the one before left.
-    const uint32_t bounces = format.ambientOcclusionMode ? 1u : uint32_t(settings_.bounces.get());
+    // Multi-bounce: what changed is voxelized again on the next frames (a fresh plan all in
+    // this one), each gathering the bounces the one before left. Only where some light is
+    // voxelized: otherwise every gather would read black.
+    const uint32_t bounces =
+        format.ambientOcclusionMode || !voxelizesLight(frame) ? 1u : uint32_t(settings_.bounces.get());
     if (!f.anyVoxelized) bounces_.reset();
     const uint32_t voxelizations = f.anyVoxelized ? bounces_.schedule(plan, bounces) : 1u;
     plan.draws = levelDraws(frame.scene, settings_, plan);
@@ -210,6 +227,8 @@ class VxgiPlugin final : public Plugin {
                     double(f.mipBytes()) / 1048576.0),
         // Persistent: zeros between voxelizations, so no frame clears it whole.
         fmt::format("voxelization scratch volume: {:.1f} MiB", double(textures_.scratchBytes()) / 1048576.0),
+        fmt::format("bounces: {} (r.VXGI.Bounces), {} change(s) still to voxelize again",
+                    settings_.bounces.get(), bounces_.pending()),
         fmt::format("last update: {}", lastPlanReason_)};
     if (lastLayout_)
       for (size_t l = 0; l < lastLayout_->levels().size(); ++l) {

@@ -142,7 +142,7 @@ void VxgiSettings::declare(PluginContext& ctx) {
        .category = clip});
   bounces = ctx.addCVar<int32_t>(
       {.name = "r.VXGI.Bounces",
-       .defaultValue = 4,
+       .defaultValue = 3,
        .help = "Bounces of indirect light (1..16). 1 is the seed's one bounce; each more is one more "
                "voxelization of what changed, in which every surface also reflects the indirect light "
                "cones gather at it from the clip-map as it stands.",

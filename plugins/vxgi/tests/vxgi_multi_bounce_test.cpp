@@ -130,5 +130,21 @@ TEST_F(VxgiMultiBounce, AMovedObjectIsVoxelizedAgainForEachBounceThenNoMore) {
   EXPECT_LT(std::stol(reasons[1].substr(at + 2)), 32 * 32 * 32 / 8) << reasons[1];
 }
 
+TEST_F(VxgiMultiBounce, NothingToBounceVoxelizesOnce) {
+  // Voxelized surfaces, but no light that VXGI voxelizes and nothing emissive: every gather
+  // would read black, so the fresh frame voxelizes once, as with one bounce. The same scene
+  // with its light flagged runs every bounce.
+  for (const char* flag : {"0", "1"}) {
+    start("content/tests/no_flagged_materials.gltf",
+          with(kSmall, {"r.VXGI.Bounces=4", "Material.UsedWithVxgiVoxelization=1",
+                        std::string("Light.VxgiIndirectLighting=") + flag}),
+          "VXGI");
+    RenderedFrame f = render(16, 16, {"indirect-irradiance"});
+    EXPECT_TRUE(f.graph.executed("VXGI.Voxelize.L0")) << flag;
+    EXPECT_EQ(f.graph.find("VXGI.Bounce0.Voxelize.L0") != nullptr, std::string(flag) == "1") << flag;
+    finish();
+  }
+}
+
 }  // namespace
 }  // namespace bounce::test

@@ -225,31 +225,31 @@ TEST_F(VxgiSunlitRoom, DefaultSettingsKeepTheOuterFacesOut) {
 }
 
 TEST_F(VxgiSunlitRoom, MultiBounceAtTheDefaultsLightsTheRoomAsEveryBounceDoes) {
-  // The four rooms at the defaults (128³ × 5, r.VXGI.Bounces 4) against the path tracer's
+  // The four rooms at the defaults (128³ × 5, r.VXGI.Bounces 3) against the path tracer's
   // every bounce, which is what lights a sunlit interior: most of its light has bounced more
   // than once (3.0–3.4 times the one bounce on the walls). With one bounce VXGI read 0.2–0.5
   // of it there, and the floor in front of the sun patch, which only light bounced twice or
   // more reaches, read 0.01 (bounce-bench; the one-bounce tests above).
-  // Measured, as VXGI / every bounce (10 cm, 20 cm, window off centre, sun at 50°): view 1.10,
-  // 1.11, 1.03, 1.31; walls 0.90–1.25 in the first three rooms and 0.94–1.50 in the high-sun
+  // Measured, as VXGI / every bounce (10 cm, 20 cm, window off centre, sun at 50°): view 0.95,
+  // 0.96, 0.89, 1.17; walls 0.77–1.13 in the first three rooms and 0.82–1.42 in the high-sun
   // one, whose window wall and ceiling carry the one bounce's excess at the defaults ("Known
-  // gaps", "A high sun"); floor 1.21, 1.21, 1.14, 1.20. Every bounce adds the one bounce's
-  // excess of 1.0–1.2 again (the Cornell box: 1.16 for one bounce, 1.13 for four).
-  // Bounds: the view within [0.85, 1.45], every wall within [0.7, 1.7], the floor at least
+  // gaps", "A high sun"); floor 1.03, 1.03, 0.96, 1.02. With 4 bounces the views read 1.03–1.31:
+  // every bounce adds the one bounce's excess of 1.0–1.2 again.
+  // Bounds: the view within [0.8, 1.35], every wall within [0.6, 1.7], the floor at least
   // 0.8 (each with a margin of 10–25%; the reference's noise is ~2%). One bounce fails the
   // view's and the floor's bounds in every room.
   for (const char* scene :
        {"content/tests/sunlit_room_10cm_window_view.gltf", "content/tests/sunlit_room_window_view.gltf",
         "content/tests/sunlit_room_10cm_offset_window.gltf",
         "content/tests/sunlit_room_high_sun_window_view.gltf"}) {
-    const WallLight w = measure(scene, {"r.VXGI.MapSize=128", "r.VXGI.StackLevels=5", "r.VXGI.Bounces=4"});
+    const WallLight w = measure(scene, {"r.VXGI.MapSize=128", "r.VXGI.StackLevels=5", "r.VXGI.Bounces=3"});
     const double view = w.vxgiAll / std::max(w.allBouncesAll, 1e-9);
-    EXPECT_GT(view, 0.85) << scene;
-    EXPECT_LT(view, 1.45) << scene;
+    EXPECT_GT(view, 0.8) << scene;
+    EXPECT_LT(view, 1.35) << scene;
     for (int i = 0; i < 6; ++i) {
       if (w.pixels[i] == 0) continue;
       const double ratio = w.vxgi[i] / std::max(w.allBounces[i], 1e-9);
-      EXPECT_GT(ratio, 0.7) << scene << ", " << kWalls[i];
+      EXPECT_GT(ratio, 0.6) << scene << ", " << kWalls[i];
       EXPECT_LT(ratio, 1.7) << scene << ", " << kWalls[i];
     }
     ASSERT_GT(w.pixels[2], 1000u) << scene << ": the floor fills the lower part of the view";
