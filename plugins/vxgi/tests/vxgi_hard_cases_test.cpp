@@ -28,16 +28,6 @@ class VxgiHardCases : public RenderFixture {
 
 float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
-// The largest difference over every pixel and colour channel of two images of the same size.
-double largestDifference(const ImageBuffer& a, const ImageBuffer& b) {
-  double worst = 0;
-  for (uint32_t y = 0; y < a.height; ++y)
-    for (uint32_t x = 0; x < a.width; ++x)
-      for (uint32_t c = 0; c < std::min(a.channels, 3u); ++c)
-        worst = std::max(worst, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
-  return worst;
-}
-
 // An image reached by changes (`changed`) must equal a fresh start's in the same state: to
 // a rounding-level difference (float atomics add in another order) of what the changes
 // changed, measured from the image before them (`before`).

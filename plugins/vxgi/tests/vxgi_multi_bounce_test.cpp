@@ -22,15 +22,6 @@ namespace {
 
 class VxgiMultiBounce : public RenderFixture {};
 
-double largestDifference(const ImageBuffer& a, const ImageBuffer& b) {
-  double worst = 0;
-  for (uint32_t y = 0; y < a.height; ++y)
-    for (uint32_t x = 0; x < a.width; ++x)
-      for (uint32_t c = 0; c < std::min(a.channels, 3u); ++c)
-        worst = std::max(worst, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
-  return worst;
-}
-
 TEST_F(VxgiMultiBounce, FurnaceSumsTheGeometricSeriesOfItsBounces) {
   // The white furnace (walls of albedo ρ = 0.5 emitting Le = 1): with B bounces every voxel
   // emits Le·Σ_{k<B} ρ^k, so the irradiance is π times that and the radiance

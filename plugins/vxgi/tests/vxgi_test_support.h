@@ -50,6 +50,16 @@ inline const std::vector<std::string> kSmall = {"r.VXGI.MapSize=32",     "r.VXGI
                                                 "r.VXGI.DiffuseCones=8", "r.VXGI.StoreEmittanceInFP16=1",
                                                 "r.Bloom.Intensity=0",   "r.VXGI.Bounces=1"};
 
+/// The largest difference over every pixel and colour channel of two images of the same size.
+inline double largestDifference(const ImageBuffer& a, const ImageBuffer& b) {
+  double worst = 0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x)
+      for (uint32_t c = 0; c < std::min(a.channels, 3u); ++c)
+        worst = std::max(worst, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
+  return worst;
+}
+
 inline std::vector<std::string> with(std::vector<std::string> base, std::vector<std::string> more) {
   base.insert(base.end(), more.begin(), more.end());
   return base;
