@@ -74,10 +74,14 @@ void main() {
     if (maxComponent(previous - x) > ddgiBlend.y) h = max(0.0, h - 0.75);  // big darkening: adapt fast
     if (luminance(delta) > ddgiBlend.z) delta *= 0.25;                     // big brightening: damp
     vec3 step = (1.0 - h) * delta;
-    // Darkening moves at least 1/1024 per update (the smallest step the format holds),
-    // so a light switched off reaches exactly 0 instead of approaching it forever.
-    if (maxComponent(x) < maxComponent(previous))
-      step = sign(step) * min(max(vec3(1.0 / 1024.0), abs(step)), abs(delta));
+    // A channel whose rays saw exactly nothing moves at least 1/1024 per update (the
+    // smallest step the format holds), so what a switched-off light left reaches exactly 0
+    // instead of approaching it forever. Only then: on every darkening step it biased noisy
+    // texels low (an update darkens as often as it brightens, but was pushed further): the
+    // Cornell box's indirect light after 1000 updates read 0.950 of the path tracer's, and
+    // 1.002 with the minimum kept for black targets.
+    bvec3 black = equal(x, vec3(0.0));
+    step = mix(step, sign(step) * min(max(vec3(1.0 / 1024.0), abs(step)), abs(delta)), black);
 #if DDGI_IRRADIANCE_MANTISSA_BITS < 23
     // A step below half a unit in the last place of the format rounds away: with
     // hysteresis 0.97 an RGBA16F furnace would stall at 92% of its irradiance. Move at
