@@ -60,6 +60,7 @@ const std::vector<std::string> kFixedColumns = {"technique",
                                                 "gpu_ms",
                                                 "cpu_ms",
                                                 "total_ms",
+                                                "settling_frames",
                                                 "persistent_bytes",
                                                 "transient_bytes",
                                                 "radiance_rel_rmse",
@@ -100,6 +101,7 @@ Measurement vxgiDefault() {
   m.cpuMs = 2.25;
   m.persistentBytes = 123456789012;
   m.transientBytes = 4096;
+  m.settlingFrames = 48;
   m.radiance.meanRelativeError = 0.05;
   m.radiance.maxAbsoluteError = 3.5;
   m.irradiance = {.rmse = 0,
@@ -142,6 +144,7 @@ TEST(ReportCsv, RowHoldsTheMeasurementsValues) {
   EXPECT_EQ(column(rows, 1, "gpu_ms"), "10.25");
   EXPECT_EQ(column(rows, 1, "cpu_ms"), "2.25");
   EXPECT_EQ(column(rows, 1, "total_ms"), "12.5");
+  EXPECT_EQ(column(rows, 1, "settling_frames"), "48");
   EXPECT_EQ(column(rows, 1, "persistent_bytes"), "123456789012");
   EXPECT_EQ(column(rows, 1, "transient_bytes"), "4096");
   EXPECT_EQ(column(rows, 1, "radiance_rel_rmse"), "0.0421");

@@ -38,6 +38,7 @@ Report sampleReport() {
   fast.onParetoFront = true;
   fast.persistentBytes = 3 * 1024 * 1024;
   fast.transientBytes = 1024 * 1024 / 2;
+  fast.settlingFrames = 41;
   fast.irradiance.meanRatio = 1.2;
   fast.irradiance.lowestRegionRatio = 0.12;
   fast.irradiance.highestRegionRatio = 2.5;
@@ -104,11 +105,12 @@ TEST(ReportMarkdown, DefaultConfigurationIsBoldAndOthersAreNot) {
   EXPECT_THAT(md, Not(HasSubstr("**VXGI cones=32**")));
 }
 
-TEST(ReportMarkdown, RowShowsTimesMemoryErrorsPathTracerRatioParetoAndLinks) {
+TEST(ReportMarkdown, RowShowsTimesMemorySettlingErrorsPathTracerRatioParetoAndLinks) {
   const std::string row = rowOf(writeAndRead(sampleReport()), "VXGI defaults");
-  EXPECT_EQ(row,
-            "| **VXGI defaults** | 18.0 | 2.00 | 20.0 | 3.5 | 0.05 | 0 | 0 | 1.2 | 0.12–2.5 | 12.3× | ✓ | "
-            "[img](images/vxgi%20default.png) | [heat map](heat/vxgi_default.png) |");
+  EXPECT_EQ(
+      row,
+      "| **VXGI defaults** | 18.0 | 2.00 | 20.0 | 3.5 | 41 | 0.05 | 0 | 0 | 1.2 | 0.12–2.5 | 12.3× | ✓ | "
+      "[img](images/vxgi%20default.png) | [heat map](heat/vxgi_default.png) |");
 }
 
 TEST(ReportMarkdown, PathTracerColumnIsADashOutsideTheMeasuredRange) {

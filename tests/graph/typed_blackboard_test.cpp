@@ -1,6 +1,7 @@
 // Typed blackboard values (BlackboardKey<T>): per-frame state one hook hands to a later
 // one, checked by type.
 
+#include "bounce/frame/settling.h"
 #include "bounce/graph/render_graph.h"
 
 #include <gtest/gtest.h>
@@ -59,6 +60,16 @@ TEST(TypedBlackboard, HoldsMoveOnlyValues) {
   g.blackboard().set(kMoveOnly, std::make_unique<int>(42));
   ASSERT_NE(g.blackboard().get(kMoveOnly), nullptr);
   EXPECT_EQ(**g.blackboard().get(kMoveOnly), 42);
+}
+
+TEST(SettlingNotes, EveryHooksNoteIsKeptAndAFrameWithoutAnyHasSettled) {
+  RenderGraph graph;
+  EXPECT_TRUE(settlingNotes(graph).empty());
+  noteSettling(graph, "A: warming up");
+  noteSettling(graph, "B: history 2 of 4");
+  EXPECT_EQ(settlingNotes(graph), (std::vector<std::string>{"A: warming up", "B: history 2 of 4"}));
+  RenderGraph next;  // the next frame's graph starts with none
+  EXPECT_TRUE(settlingNotes(next).empty());
 }
 
 }  // namespace

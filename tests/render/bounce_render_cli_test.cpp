@@ -228,6 +228,51 @@ TEST(BounceRenderCli, ARequestedPluginThatFailsToStartExitsWithStatusTwoUnlessKe
   EXPECT_EQ(going.status, 0) << going.output;
 }
 
+// The frame count of a run without --frames, from its line "N frames: the results settled";
+// 0 when it did not print one.
+uint32_t settledAfter(const std::string& output) {
+  const size_t at = output.find(" frames: the results settled");
+  if (at == std::string::npos) return 0;
+  const size_t start = output.rfind(' ', at - 1);
+  return uint32_t(std::stoul(output.substr(start + 1, at - start - 1)));
+}
+
+TEST(BounceRenderCli, WithoutFramesItRendersUntilTheTechniqueHasSettled) {
+  // DDGI's new probes warm up over tens of updates and say so in each frame until then
+  // (bounce/frame/settling.h): without --frames the run goes on until a frame has settled and
+  // writes that frame, which is what --frames with that count writes; one frame fewer is
+  // still warming up, and the run says so. A technique with nothing to settle (Ambient)
+  // renders one frame.
+  const std::string scene = "--scene content/cornell_box.gltf --gi DDGI --width 24 --height 24 ";
+  const std::string settled = scratch("settled.exr"), counted = scratch("counted.exr");
+  CommandResult r = run(scene + "--aov indirect-irradiance=" + settled);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const uint32_t frames = settledAfter(r.output);
+  ASSERT_GT(frames, 10u) << r.output;  // tens of updates, not one
+  ASSERT_LT(frames, 200u) << r.output;
+  CommandResult again = run(scene + fmt::format("--frames {} --aov indirect-irradiance={}", frames, counted));
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_EQ(again.output.find("not settled"), std::string::npos) << again.output;
+  ImageBuffer a, b;
+  std::string error;
+  ASSERT_TRUE(readExr(settled, a, &error)) << error;
+  ASSERT_TRUE(readExr(counted, b, &error)) << error;
+  EXPECT_EQ(a.pixels, b.pixels) << "the settled frame is frame " << frames;
+  CommandResult early = run(scene + fmt::format("--frames {}", frames - 1));
+  ASSERT_EQ(early.status, 0) << early.output;
+  EXPECT_NE(early.output.find(fmt::format(
+                "the last of {} frames has not settled (DDGI: new probes warming up", frames - 1)),
+            std::string::npos)
+      << early.output;
+
+  const std::string stats = scratch("ambient-stats.json");
+  CommandResult ambient =
+      run("--scene content/cornell_box.gltf --gi Ambient --width 24 --height 24 --stats " + stats);
+  ASSERT_EQ(ambient.status, 0) << ambient.output;
+  EXPECT_EQ(settledAfter(ambient.output), 0u) << ambient.output;
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(stats))["timedFrames"], 1);
+}
+
 TEST(BounceRenderCli, ControlBytesInBadInputAreEscapedOnTheTerminal) {
   // popen's /bin/sh is dash: printf makes the bytes (ESC, BEL) for the argument.
   CommandResult r = run(

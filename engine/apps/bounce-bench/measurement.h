@@ -24,6 +24,9 @@ struct Measurement {
   double gpuMs = 0;    ///< GPU milliseconds per frame, median over timed frames
   double cpuMs = 0;    ///< CPU milliseconds per frame spent in pass hooks (path tracing...)
   double totalMs = 0;  ///< gpuMs + cpuMs: the cost the Pareto front uses
+  /// Untimed frames before its results settled (bounce/frame/settling.h): a probe volume's
+  /// warm-up; 0 for a technique whose first frame is what it settles to.
+  uint64_t settlingFrames = 0;
   std::vector<std::pair<std::string, double>> passMs;  ///< GPU median per pass
   uint64_t persistentBytes = 0;
   uint64_t transientBytes = 0;

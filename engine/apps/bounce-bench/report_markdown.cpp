@@ -110,6 +110,9 @@ void appendLegend(std::string& out) {
       "**total ms** is their sum, the cost the Pareto front uses.\n";
   out += "- **Memory**: persistent + transient GPU memory in MiB.\n";
   out +=
+      "- **Settles after**: untimed frames before the technique's results settled (a probe volume's "
+      "warm-up), rendered before the timed ones; 0 when the first frame is what it settles to.\n";
+  out +=
       "- **Rel. RMSE**: root-mean-square error against the reference divided by the reference's mean; "
       "**mean rel. error**: per-pixel |error| / (|reference| + ε), averaged. Radiance is the final image, "
       "irradiance the indirect-irradiance output; **irradiance ÷ reference**: its mean over the reference's, "
@@ -136,20 +139,20 @@ void appendTechniqueTable(std::string& out, const TechniqueGroup& group) {
 
   out += fmt::format("## {}\n\n", cellText(group.technique));
   out +=
-      "| Configuration | GPU ms | CPU ms | Total ms | Memory MiB | Radiance rel. RMSE | Radiance mean rel. "
-      "error | Irradiance rel. RMSE | Irradiance ÷ reference | By region | Path tracer needs | Pareto | "
-      "Image | Heat map |\n";
-  out += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|---|---|\n";
+      "| Configuration | GPU ms | CPU ms | Total ms | Memory MiB | Settles after | Radiance rel. RMSE | "
+      "Radiance mean rel. error | Irradiance rel. RMSE | Irradiance ÷ reference | By region | Path tracer "
+      "needs | Pareto | Image | Heat map |\n";
+  out += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|---|---|\n";
   for (const Measurement* m : rows) {
     const std::string label = cellText(m->config.label.empty() ? m->config.technique : m->config.label);
-    out +=
-        fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
-                    m->config.isDefault ? fmt::format("**{}**", label) : label, milliseconds(m->gpuMs),
-                    milliseconds(m->cpuMs), milliseconds(m->totalMs),
-                    mebibytes(m->persistentBytes + m->transientBytes), errorValue(m->radiance.relativeRmse),
-                    errorValue(m->radiance.meanRelativeError), errorValue(m->irradiance.relativeRmse),
-                    errorValue(m->irradiance.meanRatio), regionRange(m->irradiance), pathTracerRatio(*m),
-                    m->onParetoFront ? "✓" : "", link("img", m->image), link("heat map", m->heatMap));
+    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+                       m->config.isDefault ? fmt::format("**{}**", label) : label, milliseconds(m->gpuMs),
+                       milliseconds(m->cpuMs), milliseconds(m->totalMs),
+                       mebibytes(m->persistentBytes + m->transientBytes), m->settlingFrames,
+                       errorValue(m->radiance.relativeRmse), errorValue(m->radiance.meanRelativeError),
+                       errorValue(m->irradiance.relativeRmse), errorValue(m->irradiance.meanRatio),
+                       regionRange(m->irradiance), pathTracerRatio(*m), m->onParetoFront ? "✓" : "",
+                       link("img", m->image), link("heat map", m->heatMap));
   }
   out += '\n';
 }

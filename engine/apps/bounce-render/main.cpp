@@ -51,14 +51,19 @@ int main(int argc, char** argv) {
   CLI::App app{"bounce-render: render a glTF scene with a GI technique"};
   bounce::app::acceptUnrealSpellings(app);
   std::string scenePath, technique, outPath, statsPath, graphJson, deviceName;
-  uint32_t width = 512, height = 512, frames = 1;
+  uint32_t width = 512, height = 512, frames = 0, maxFrames = 1000;
   bool printGraph = false, keepGoing = false;
   std::vector<std::string> inis, sets, aovArgs, enable, disable, pluginDirs;
   app.add_option("--scene", scenePath, "glTF scene to load")->required();
   app.add_option("--gi", technique, "GI technique: a GlobalIllumination plugin's name, or none");
   app.add_option("--width", width, "Output width in pixels")->check(CLI::Range(1u, 16384u));
   app.add_option("--height", height, "Output height in pixels")->check(CLI::Range(1u, 16384u));
-  app.add_option("--frames", frames, "Frames to render (the last is written)")
+  app.add_option(
+         "--frames", frames,
+         "Frames to render (the last is written); without it, frames until the GI technique's results "
+         "have settled (probes warmed up), at most --max-frames")
+      ->check(CLI::Range(1u, 100000u));
+  app.add_option("--max-frames", maxFrames, "Most frames to render without --frames (default 1000)")
       ->check(CLI::Range(1u, 100000u));
   app.add_option("--ini", inis, "Extra ini file, applied after the user ini (repeatable)");
   app.add_option("--set", sets, "Console variable NAME=VALUE at command-line priority (repeatable)");
@@ -121,20 +126,33 @@ int main(int argc, char** argv) {
   try {
     bounce::Renderer renderer(engine, *device);
     const bounce::FrameView view = bounce::FrameView::fromCamera(camera, width, height);
-    for (uint32_t f = 0; f < frames; ++f) {
+    // Without --frames the frames go on until one's results have settled (its hooks left
+    // no settling note, bounce/frame/settling.h), each read back, as it may be the last.
+    const bool untilSettled = frames == 0;
+    const uint32_t most = untilSettled ? maxFrames : frames;
+    for (uint32_t f = 0; f < most; ++f) {
+      const bool maybeLast = untilSettled || f + 1 == frames;
       bounce::FrameOutputs outputs;
-      if (f + 1 == frames) {
+      if (maybeLast) {
         outputs.display = !outPath.empty();
         for (const AovRequest& a : aovs) outputs.aovs.push_back(a.name);
       }
       bounce::RenderedFrame frame = renderer.render(view, outputs, f);
       if (!frame.gpu.ok()) return fail(kBadInput, frame.gpu.errors.front());
-      // The first frame compiles pipelines and fills caches: it is not timed.
-      if (f > 0 || frames == 1) stats.addFrame(frame.gpu, frame.cpu);
-      if (f + 1 == frames) {
+      const bool isLast = f + 1 == most || (untilSettled && frame.settling.empty());
+      // The first frame compiles pipelines and fills caches: it is timed only when alone.
+      if (f > 0 || isLast) stats.addFrame(frame.gpu, frame.cpu);
+      if (isLast) {
         for (const std::string& w : frame.warnings) bounce::log::warn("{}", w);
+        if (!frame.settling.empty())
+          bounce::log::warn("the last of {} frames has not settled ({}){}", f + 1,
+                            fmt::join(frame.settling, "; "),
+                            untilSettled ? ": raise --max-frames" : ": leave out --frames, or raise it");
+        else if (f > 0)
+          bounce::log::info("{} frames{}", f + 1, untilSettled ? ": the results settled" : "");
         stats.setGraph(frame.graph, renderer.executor().memory());
         last = std::move(frame);
+        break;
       }
     }
   } catch (const bounce::gpu::ShaderError& e) {

@@ -1,6 +1,7 @@
 #include "renderer/renderer.h"
 
 #include "bounce/core/log.h"
+#include "bounce/frame/settling.h"
 #include "image/image_resample.h"
 
 #include <glm/gtc/packing.hpp>
@@ -80,6 +81,7 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
     rayTracing_->declare(g, f);
   };
   out.cpu = engine_.buildFrame(graph, frame, stages);
+  out.settling = settlingNotes(graph);
   out.gpu = gpu::runFrame(*executor_, graph, frame, *scene_, &out.graph);
   engine_.events().frameCompleted.emit({frameIndex, view, out.gpu.frameMilliseconds, out.gpu.ok()});
 

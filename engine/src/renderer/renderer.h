@@ -35,6 +35,9 @@ struct RenderedFrame {
   /// RGB, or one channel for depth in metres along the view axis, 0 where nothing was hit).
   std::map<std::string, ImageBuffer> images;
   std::vector<std::string> warnings;  ///< post-process volume problems
+  /// Why this frame's results are not yet what a still view settles to (bounce/frame/
+  /// settling.h); empty when they are.
+  std::vector<std::string> settling;
   /// The size the scene rendered at (the view's size × the screen percentage).
   uint32_t renderWidth = 0, renderHeight = 0;
 };

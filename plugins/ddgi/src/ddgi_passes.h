@@ -48,6 +48,9 @@ struct VolumePlan {
   std::string litReason;   ///< why (or why not), for the frame report
   bool update = false;     ///< trace and blend this frame
   std::string updateReason;
+  /// Non-empty while the probes still move towards their light by design (the warm-up of
+  /// new probes): why, for the frame's settling notes (bounce/frame/settling.h).
+  std::string settling;
   uint32_t probesUpdated() const { return constants.update.y; }
   uint32_t raysPerProbe() const { return constants.texels.z; }
 };

@@ -14,6 +14,7 @@
 #include "volume_specs.h"
 
 #include <bounce/core/log.h>
+#include <bounce/frame/settling.h>
 #include <bounce/graph/channels.h>
 #include <bounce/plugin/plugin.h>
 #include <bounce/plugin/plugin_context.h>
@@ -107,6 +108,7 @@ class DdgiPlugin final : public Plugin {
       VolumeFrameState f;
       f.plan = volume.plan(frame, specs_[i], settings_, lighting);
       f.suffix = specs_.size() == 1 ? std::string() : " [" + specs_[i].name + "]";
+      if (!f.plan.settling.empty()) noteSettling(graph, "DDGI" + f.suffix + ": " + f.plan.settling);
       f.volume = addUpdatePasses(graph, shaders_, f.plan, volume.textures(), volume.textures().import(graph),
                                  f.suffix);
       frames.push_back(std::move(f));

@@ -79,6 +79,16 @@ void DdgiSettings::declare(PluginContext& ctx) {
        .help = "Shade ray hits with the probes' previous irradiance as well (multi-bounce); 0: one bounce.",
        .ini = {"DDGI", "InfiniteBounce"},
        .category = probes});
+  warmUp = ctx.addCVar<bool>(
+      {.name = "r.DDGI.WarmUp",
+       .defaultValue = true,
+       .help =
+           "New probes take their first sweeps with hysteresis 0 (one more bounce each, until the largest "
+           "albedo leaves 1% missing) and then a running mean up to r.DDGI.Hysteresis, so a new volume "
+           "holds its light after tens of updates instead of hundreds; 0: the hysteresis from the first "
+           "update, as RTXGI.",
+       .ini = {"DDGI", "WarmUp"},
+       .category = probes});
   irradianceFormat = ctx.addCVar<int32_t>(
       {.name = "r.DDGI.IrradianceFormat",
        .defaultValue = 0,

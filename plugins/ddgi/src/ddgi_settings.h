@@ -29,7 +29,7 @@ struct DdgiSettings {
   // Probe grid and update.
   CVarRef<float> probeSpacing;  ///< metres; 0 = automatic (fitGrid)
   CVarRef<int32_t> raysPerProbe, updateBudget, irradianceTexels, distanceTexels, irradianceFormat, seed;
-  CVarRef<bool> relocation, classification, infiniteBounce;
+  CVarRef<bool> relocation, classification, infiniteBounce, warmUp;
   // Blending (RTXGI's names and defaults).
   CVarRef<float> hysteresis, irradianceThreshold, brightnessThreshold, distanceExponent, encodingGamma;
   CVarRef<float> maxRayDistance, randomRayBackfaceThreshold, fixedRayBackfaceThreshold, minFrontfaceDistance;

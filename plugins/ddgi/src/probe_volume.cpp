@@ -149,6 +149,20 @@ VolumePlan ProbeVolume::plan(const FrameContext& frame, const VolumeSpec& spec, 
                        settings.brightnessThreshold.get() < 1.0f, plan.grid.probeCount(), budget);
   const bool converged = framesSinceChange_ >= needed;
   plan.update = plan.lit && !converged;
+  // New probes warm up (convergence.h): the hysteresis of this update's sweep, set after
+  // the content key, which holds the volume's own.
+  const uint64_t framesPerSweep =
+      budget == 0 || budget >= plan.grid.probeCount() ? 1 : (plan.grid.probeCount() + budget - 1) / budget;
+  const uint64_t sweep = updates_ / framesPerSweep;
+  const WarmUp warmUp = warmUpFor(hysteresis, lighting.maxAlbedo, settings.infiniteBounce.get());
+  if (settings.warmUp.get()) {
+    c.blend.x = warmUpHysteresis(hysteresis, warmUp, sweep);
+    if (plan.update && sweep < warmUp.settledSweeps)
+      plan.settling = fmt::format(
+          "new probes warming up: sweep {} of {} ({} with hysteresis 0, then a running "
+          "mean up to {})",
+          sweep + 1, warmUp.settledSweeps, warmUp.bounceSweeps, hysteresis);
+  }
   if (converged)
     plan.updateReason = fmt::format(
         "converged: nothing changed for {} frames (scene, r.DDGI settings); a change restarts the updates",

@@ -163,5 +163,29 @@ TEST(Convergence, FollowsTheDecayOfHysteresisAndBounce) {
   EXPECT_LT(framesToConverge(0.97f, 1.0f, true, true, 100, 0), 1000000u);
 }
 
+TEST(WarmUp, BouncesUntilOnePercentIsMissingThenAMeanUpToTheHysteresis) {
+  // ⌈ln 0.01 / ln ρ⌉ sweeps with hysteresis 0, then ⌈h / (1 − h)⌉ of the running mean.
+  const WarmUp half = warmUpFor(0.97f, 0.5f, true);
+  EXPECT_EQ(half.bounceSweeps, 7u);  // 0.5⁶ = 1.6%, 0.5⁷ = 0.8%
+  EXPECT_EQ(half.settledSweeps, 7u + 33u);
+  EXPECT_EQ(warmUpFor(0.97f, 0.8f, true).bounceSweeps, 21u);
+  EXPECT_EQ(warmUpFor(0.9f, 0.5f, true).settledSweeps, 7u + 9u);
+  // One bounce, a black scene, or hysteresis 0: nothing to wait for but one sweep (and the mean).
+  EXPECT_EQ(warmUpFor(0.97f, 0.8f, false).bounceSweeps, 1u);
+  EXPECT_EQ(warmUpFor(0.97f, 0.0f, true).bounceSweeps, 1u);
+  EXPECT_EQ(warmUpFor(0.0f, 0.5f, true).settledSweeps, 7u);
+  // An albedo near 1 and frozen probes still end.
+  EXPECT_EQ(warmUpFor(0.97f, 1.0f, true).bounceSweeps, 64u);
+  EXPECT_EQ(warmUpFor(1.0f, 0.5f, true).settledSweeps, 7u + 1024u);
+
+  EXPECT_EQ(warmUpHysteresis(0.97f, half, 0), 0.0f);
+  EXPECT_EQ(warmUpHysteresis(0.97f, half, 6), 0.0f);
+  EXPECT_FLOAT_EQ(warmUpHysteresis(0.97f, half, 7), 0.5f);  // the mean of the last and this
+  EXPECT_FLOAT_EQ(warmUpHysteresis(0.97f, half, 8), 2.0f / 3.0f);
+  EXPECT_FLOAT_EQ(warmUpHysteresis(0.97f, half, 39), 0.97f);  // m = 33: 33/34 > 0.97
+  EXPECT_FLOAT_EQ(warmUpHysteresis(0.97f, half, 1000), 0.97f);
+  EXPECT_FLOAT_EQ(warmUpHysteresis(0.3f, half, 9), 0.3f);  // never above the volume's
+}
+
 }  // namespace
 }  // namespace bounce::ddgi
