@@ -138,8 +138,8 @@ TEST_F(LightGeometry, PointLightShadowHasNoLitPixelInsideItsUmbraAcrossCubeFaceS
     for (uint32_t x = 0; x < size; ++x) {
       auto p = planeHit(v, x, y, glm::vec3(0, 1, 0), 0.0f);
       if (!p || p->x > eye.x) continue;
-      // 0.2 m inside the umbra's edges keeps clear of the filtered penumbra (3×3 PCF and
-      // the normal offset blur a few centimetres here).
+      // 0.2 m inside the umbra's edges keeps clear of the filtered penumbra (3×3 PCF
+      // blurs a few centimetres here).
       const bool inUmbra = p->x > 0.8f && p->x < 2.2f && std::abs(p->z) < 2.2f;
       const bool clearlyLit = p->x > 2.7f && std::abs(p->z) < 2.0f;
       if (inUmbra) {

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -36,20 +38,38 @@ class DdgiAccuracy : public RenderFixture {
     // measures on its own.
     start(scene, {"r.DDGI.Hysteresis=0.9", "r.DDGI.LightingPassScale=1", "r.Bloom.Intensity=0"}, "DDGI");
     RenderedFrame ddgi;
-    for (int i = 0; i < updates; ++i) ddgi = render(32, 32, {"indirect-irradiance", "radiance"});
+    for (int i = 0; i < updates; ++i) ddgi = render(32, 32, {"indirect-irradiance", "radiance", "direct"});
     // 1024 paths per pixel: the reference's own relative RMSE is a few percent.
     for (const char* line :
          {"r.Reference.MaxBounces -1", "r.Reference.SamplesPerPixel 1024", "r.GI.Technique Reference"})
       engine->console().execute(line);
-    RenderedFrame reference = render(32, 32, {"indirect-irradiance", "radiance"});
+    RenderedFrame reference = render(32, 32, {"indirect-irradiance", "radiance", "direct"});
     const ImageBuffer &a = ddgi.images.at("indirect-irradiance"),
                       &b = reference.images.at("indirect-irradiance");
     for (uint32_t c = 0; c < 3; ++c) EXPECT_TRUE(channelStats(a, c).finite);
     Accuracy acc;
     acc.ratio = meanRgb(a, 0, 0, a.width, a.height) / std::max(meanRgb(b, 0, 0, b.width, b.height), 1e-9);
     acc.irradianceRmse = compareImages(a, b).relativeRmse;
-    acc.radianceRmse =
-        compareImages(ddgi.images.at("radiance"), reference.images.at("radiance")).relativeRmse;
+    // Radiance where both see the same direct light: at 32² a row of pixels whose centres lie
+    // within a shadow edge's filter ramp reads the shadow map's partial light where the path
+    // tracer's point sample is lit or not (one such row of the sun patch is 0.4 of the light
+    // against 0.955), an error of the direct light that would swamp DDGI's own. There both
+    // images keep the reference's value.
+    ImageBuffer radiance = ddgi.images.at("radiance");
+    const ImageBuffer &referenceRadiance = reference.images.at("radiance"),
+                      &direct = ddgi.images.at("direct"), &referenceDirect = reference.images.at("direct");
+    size_t edges = 0;
+    for (uint32_t y = 0; y < radiance.height; ++y)
+      for (uint32_t x = 0; x < radiance.width; ++x) {
+        // Apart by more than 5% (the two agree within 0.7% in the sun patch) and 0.01.
+        const float a = glm::dot(direct.rgb(x, y), glm::vec3(1.0f / 3.0f)),
+                    b = glm::dot(referenceDirect.rgb(x, y), glm::vec3(1.0f / 3.0f));
+        if (std::abs(a - b) <= 0.05f * std::max(a, b) + 0.01f) continue;
+        for (uint32_t c = 0; c < 3; ++c) radiance.at(x, y, c) = referenceRadiance.at(x, y, c);
+        ++edges;
+      }
+    EXPECT_LT(edges, radiance.width * radiance.height / 20) << "the direct light differs away from edges";
+    acc.radianceRmse = compareImages(radiance, referenceRadiance).relativeRmse;
     std::printf(
         "%s: DDGI / reference indirect irradiance %.3f; relative RMSE indirect-irradiance %.3f, radiance "
         "%.3f\n",
@@ -59,8 +79,9 @@ class DdgiAccuracy : public RenderFixture {
 };
 
 TEST_F(DdgiAccuracy, CornellBoxIndirectLightMatchesTheMultiBounceReference) {
-  // Measured (60 updates, 6×6×6 probes, 128 rays): ratio 0.967, relative RMSE 0.21
-  // (indirect irradiance) and 0.11 (radiance). Bounds leave room for the reference's noise.
+  // Measured (60 updates, 6×6×6 probes, 128 rays): ratio 1.020, relative RMSE 0.205
+  // (indirect irradiance) and 0.093 (radiance; 0.967 and 0.21 / 0.11 before the blend's
+  // darkening step lost its bias, ddgi README). Bounds leave room for the reference's noise.
   const Accuracy a = measure("content/cornell_box.gltf", 60);
   EXPECT_GT(a.ratio, 0.9);
   EXPECT_LT(a.ratio, 1.1);
@@ -71,7 +92,8 @@ TEST_F(DdgiAccuracy, CornellBoxIndirectLightMatchesTheMultiBounceReference) {
 TEST_F(DdgiAccuracy, SunlitRoomIndirectLightMatchesTheMultiBounceReference) {
   // A closed room with 20 cm walls lit only by the sun through a window (the sunlit outer
   // face of the window wall must not leak in). Measured (60 updates, 6×4×6 probes): ratio
-  // 1.08, relative RMSE 0.17 (indirect irradiance) and 0.08 (radiance).
+  // 1.155, relative RMSE 0.22 (indirect irradiance) and 0.057 (radiance); 1.08 and 0.17 while
+  // the darkening step's bias hid relocation's excess (ddgi README, "Tests").
   const Accuracy a = measure("content/tests/sunlit_room.gltf", 60);
   EXPECT_GT(a.ratio, 0.9);
   EXPECT_LT(a.ratio, 1.2);
@@ -83,10 +105,10 @@ TEST_F(DdgiAccuracy, AVolumeFittedToARoomsAirKeepsTheBounceOffItsWalls) {
   // The sunlit room again, with a DDGIVolume node (5 × 3 × 5 probes) spanning only the
   // room's air: the walls, and the probe rays' hits on them, lie half a cell beyond the
   // outermost probes, inside the one-cell bounce margin (OloEngine measured 0.41–0.61 of
-  // ground truth without one). Measured: ratio 1.19, relative RMSE 0.32 (indirect
-  // irradiance) and 0.105 (radiance) — brighter, not darker: a probe 0.4 m under the ceiling
-  // sees the sun patch on the floor larger than the ceiling does, and this grid has no probe
-  // nearer the walls than that (the fitted one's are 0.17 m from them: 1.08). Bounds: ratio
+  // ground truth without one). Measured: ratio 1.28, relative RMSE 0.385 (indirect
+  // irradiance) and 0.10 (radiance; 1.19 and 0.32 with the darkening step's bias) — brighter,
+  // not darker: a probe 0.4 m under the ceiling sees the sun patch on the floor larger than
+  // the ceiling does, and this grid has no probe nearer the walls than that. Bounds: ratio
   // within [0.9, 1.3], relative RMSE below 0.4 and 0.15.
   const Accuracy a = measure("content/tests/sunlit_room_air_volume.gltf", 60);
   const std::string status = engine->console().execute("ddgi.Status").lines.front();

@@ -9,7 +9,7 @@
 //   point        shadow ray 0.26 µs   shadow map (cube face, 3×3 PCF) 0.17 µs
 //   directional  shadow ray 0.20 µs   shadow map 0.16 µs
 //   spot         shadow ray 0.13 µs   shadow map 0.17 µs
-// — at most 1.5× the maps, and exact where maps are not: a map's normal offset and texel
+// — at most 1.5× the maps, and exact where maps are not: a map's depth bias and texel
 // footprint leak light through walls a few texels thick (the very case of probes behind
 // a sunlit wall), and its resolution follows the whole scene's bounds, so a small room in
 // a large scene gets a few texels. directIrradianceAtShadowMapped below is the map

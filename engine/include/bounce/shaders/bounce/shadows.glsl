@@ -5,18 +5,25 @@
 
 #include "bounce/lights.glsl"
 
-// Where P's shadow-map lookup is made: offset along the geometric normal N (normal-offset
-// shadows) so lit surfaces do not shadow themselves. The offset grows with the shadow
-// texel's footprint at P (params.w is its size at 1 m for perspective maps, in metres for
-// directional maps) and with grazing angles. Half a texel even head-on: a surface facing
-// the light squarely stores the very depth it looks up, and a zero offset left
-// lit-or-shadowed to rounding (a directional light down an axis once lit nothing).
+// Where P's shadow-map lookup is made: moved towards the light along L (a depth bias) so
+// lit surfaces do not shadow themselves. Along L the point stays on its own ray of the map,
+// so every shadow edge stays where its occluder casts it. (Offsetting along the normal, as
+// this did, also moved the lookup sideways in the map: on a floor under a 30° sun the lit
+// patch grew 2 cm past each edge its window cast, the whole filter ramp outside it, and the
+// patch's edges were most of the direct light's error against the path tracer.) The bias
+// covers what a lookup's filter reads of its own surface: the hardware 2×2 tap and the 3×3
+// taps reach 1.5 texels around P, across which a surface at angle θ to the light moves
+// tan θ texels in depth per texel; half a texel more even head-on, where the map stores the
+// very depth looked up (a zero bias left lit-or-shadowed to rounding). params.w is a
+// texel's footprint at 1 m for perspective maps, in metres for directional ones; tan θ is
+// held below 8 (83°), where cos θ already dims the light to an eighth.
 vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L) {
   uint type = uint(light.directionType.w + 0.5);
   float footprint =
       type == LIGHT_DIRECTIONAL ? light.params.w : light.params.w * length(P - light.positionRange.xyz);
-  float cosTheta = saturate(dot(N, L));
-  return P + N * (light.params.z + footprint * (0.5 + 1.5 * sqrt(1.0 - cosTheta * cosTheta)));
+  float cosTheta = max(dot(N, L), 0.0);
+  float tanTheta = min(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 0.125), 8.0);
+  return P + L * (light.params.z + footprint * (0.5 + 1.5 * tanTheta));
 }
 
 // The layer of the light's maps that holds the lookup point Q (the light has maps).
@@ -52,8 +59,8 @@ float shadowTap(vec4 clip, int layer, sampler2DArrayShadow maps) {
   return shadowMapCoordinates(clip, c) ? texture(maps, vec4(c.xy, float(layer), c.z)) : 1.0;
 }
 
-// Fraction of the light reaching P (1: lit). `N` is the geometric normal, used to offset
-// the lookup along it (shadowLookupPoint).
+// Fraction of the light reaching P (1: lit). `N` is the geometric normal, whose angle to L
+// sizes the lookup's depth bias (shadowLookupPoint).
 float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow maps) {
   if (int(light.intensity.w) < 0) return 1.0;
   vec3 Q = shadowLookupPoint(light, P, N, L);
