@@ -70,6 +70,7 @@ void drawFramePanel(Viewer& viewer, bool* open) {
           "The view is complete and settled, and its frames took over 4/3 of the frame-time budget: "
           "it is shown as it is, so the UI keeps its pace. Anything that changes the view renders again.");
   }
+  for (const std::string& note : frame.settling) ImGui::TextDisabled("settling: %s", note.c_str());
   const std::vector<float> history(viewer.frameHistory().begin(), viewer.frameHistory().end());
   if (!history.empty())
     ImGui::PlotLines("##history", history.data(), int(history.size()), 0, "GPU ms per frame", 0.0f, FLT_MAX,

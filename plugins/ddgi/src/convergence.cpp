@@ -14,9 +14,11 @@ uint64_t framesToConverge(float hysteresis, float maxAlbedo, bool infiniteBounce
   const double decay = std::min(kept, 0.9999);
   const double residual = 1.0 / 2048.0;
   const uint64_t once = decay <= 0.0 ? 1 : uint64_t(std::ceil(std::log(residual) / std::log(decay)));
-  const uint64_t framesPerUpdate =
-      budget == 0 || budget >= probeCount ? 1 : (uint64_t(probeCount) + budget - 1) / budget;
-  return 2 * std::max<uint64_t>(once, 1) * framesPerUpdate;
+  return 2 * std::max<uint64_t>(once, 1) * framesPerSweep(probeCount, budget);
+}
+
+uint64_t framesPerSweep(uint32_t probeCount, uint32_t budget) {
+  return budget == 0 || budget >= probeCount ? 1 : (uint64_t(probeCount) + budget - 1) / budget;
 }
 
 WarmUp warmUpFor(float hysteresis, float maxAlbedo, bool infiniteBounce) {

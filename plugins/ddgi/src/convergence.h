@@ -21,6 +21,9 @@ namespace bounce::ddgi {
 uint64_t framesToConverge(float hysteresis, float maxAlbedo, bool infiniteBounce, bool brightnessDamped,
                           uint32_t probeCount, uint32_t budget);
 
+/// Frames one update of every probe (a sweep) takes: 1, or ⌈probes / budget⌉ with a budget.
+uint64_t framesPerSweep(uint32_t probeCount, uint32_t budget);
+
 /// The warm-up of new probes (Bounce's; RTXGI blends with the volume's hysteresis from the
 /// first update, so a new volume reaches its light over hundreds of updates: 0.30 of the
 /// path tracer's indirect light after one frame and 0.46 after 30 on the Cornell box).

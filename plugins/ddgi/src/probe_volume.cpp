@@ -151,9 +151,7 @@ VolumePlan ProbeVolume::plan(const FrameContext& frame, const VolumeSpec& spec, 
   plan.update = plan.lit && !converged;
   // New probes warm up (convergence.h): the hysteresis of this update's sweep, set after
   // the content key, which holds the volume's own.
-  const uint64_t framesPerSweep =
-      budget == 0 || budget >= plan.grid.probeCount() ? 1 : (plan.grid.probeCount() + budget - 1) / budget;
-  const uint64_t sweep = updates_ / framesPerSweep;
+  const uint64_t sweep = updates_ / framesPerSweep(plan.grid.probeCount(), budget);
   const WarmUp warmUp = warmUpFor(hysteresis, lighting.maxAlbedo, settings.infiniteBounce.get());
   if (settings.warmUp.get()) {
     c.blend.x = warmUpHysteresis(hysteresis, warmUp, sweep);
