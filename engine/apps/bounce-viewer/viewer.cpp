@@ -480,11 +480,11 @@ void Viewer::renderAndPresent() {
   // Settled: the view was complete, its last frame changed no pixel by a level of the
   // 8-bit display (lastChange is infinite until then), and no technique said its results
   // are still settling (bounce/frame/settling.h: a warm-up's last steps are small).
-  const RefinementState refinement{.viewChanged = state != refinementState_,
-                                   .factor = refinement_.factor(),
-                                   .complete = refinement_.complete(),
-                                   .settled = refinement_.lastChange() < 1.0f / 255.0f &&
-                                              lastFrame_.settling.empty()};
+  const RefinementState refinement{
+      .viewChanged = state != refinementState_,
+      .factor = refinement_.factor(),
+      .complete = refinement_.complete(),
+      .settled = refinement_.lastChange() < 1.0f / 255.0f && lastFrame_.settling.empty()};
   // A settled still view far over budget is shown as it is (RenderFactor::renders), so the
   // UI keeps its pace; a screenshot renders all the same (it writes the HDR image too).
   const float budgetMs = engine_->rendererSettings().dynamicResFrameTimeBudgetMs.get();
