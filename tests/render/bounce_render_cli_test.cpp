@@ -244,12 +244,16 @@ TEST(BounceRenderCli, WithoutFramesItRendersUntilTheTechniqueHasSettled) {
   // still warming up, and the run says so. A technique with nothing to settle (Ambient)
   // renders one frame.
   const std::string scene = "--scene content/cornell_box.gltf --gi DDGI --width 24 --height 24 ";
-  const std::string settled = scratch("settled.exr"), counted = scratch("counted.exr");
-  CommandResult r = run(scene + "--aov indirect-irradiance=" + settled);
+  const std::string settled = scratch("settled.exr"), counted = scratch("counted.exr"),
+                    settledStats = scratch("settled.json"), earlyStats = scratch("early.json");
+  CommandResult r = run(scene + "--aov indirect-irradiance=" + settled + " --stats " + settledStats);
   ASSERT_EQ(r.status, 0) << r.output;
   const uint32_t frames = settledAfter(r.output);
   ASSERT_GT(frames, 10u) << r.output;  // tens of updates, not one
   ASSERT_LT(frames, 200u) << r.output;
+  const nlohmann::json s = nlohmann::json::parse(std::ifstream(settledStats));
+  EXPECT_EQ(s["frames"], frames);
+  EXPECT_TRUE(s["settling"].empty()) << s["settling"];
   CommandResult again = run(scene + fmt::format("--frames {} --aov indirect-irradiance={}", frames, counted));
   ASSERT_EQ(again.status, 0) << again.output;
   EXPECT_EQ(again.output.find("not settled"), std::string::npos) << again.output;
@@ -258,8 +262,12 @@ TEST(BounceRenderCli, WithoutFramesItRendersUntilTheTechniqueHasSettled) {
   ASSERT_TRUE(readExr(settled, a, &error)) << error;
   ASSERT_TRUE(readExr(counted, b, &error)) << error;
   EXPECT_EQ(a.pixels, b.pixels) << "the settled frame is frame " << frames;
-  CommandResult early = run(scene + fmt::format("--frames {}", frames - 1));
+  CommandResult early = run(scene + fmt::format("--frames {} --stats {}", frames - 1, earlyStats));
   ASSERT_EQ(early.status, 0) << early.output;
+  const nlohmann::json e = nlohmann::json::parse(std::ifstream(earlyStats));
+  EXPECT_EQ(e["frames"], frames - 1);
+  ASSERT_EQ(e["settling"].size(), 1u) << e["settling"];
+  EXPECT_EQ(e["settling"][0].get<std::string>().rfind("DDGI: new probes warming up", 0), 0u) << e["settling"];
   EXPECT_NE(early.output.find(fmt::format(
                 "the last of {} frames has not settled (DDGI: new probes warming up", frames - 1)),
             std::string::npos)

@@ -151,6 +151,7 @@ int main(int argc, char** argv) {
         else if (f > 0)
           bounce::log::info("{} frames{}", f + 1, untilSettled ? ": the results settled" : "");
         stats.setGraph(frame.graph, renderer.executor().memory());
+        stats.setFrames(f + 1, frame.settling);
         last = std::move(frame);
         break;
       }

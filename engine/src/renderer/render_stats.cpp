@@ -76,12 +76,19 @@ std::string RenderStats::table() const {
   return out;
 }
 
+void RenderStats::setFrames(uint32_t rendered, std::vector<std::string> settling) {
+  framesRendered_ = rendered;
+  settling_ = std::move(settling);
+}
+
 bool RenderStats::writeJson(const std::string& path, std::string* error) const {
   nlohmann::json j;
   j["device"] = device_;
   j["width"] = width_;
   j["height"] = height_;
   j["technique"] = technique_;
+  j["frames"] = framesRendered_;
+  j["settling"] = settling_;
   j["timedFrames"] = frameMs_.size();
   j["frameMs"] = median(frameMs_);
   j["passes"] = nlohmann::json::array();

@@ -18,6 +18,9 @@ class RenderStats {
   RenderStats(std::string device, uint32_t width, uint32_t height, std::string technique);
   void addFrame(const gpu::FrameResult& frame, const std::vector<Engine::HookTiming>& cpu = {});
   void setGraph(const CompiledGraph& graph, const gpu::MemoryReport& memory);
+  /// Frames rendered in all, and the last one's settling notes (bounce/frame/settling.h;
+  /// empty: its results had settled).
+  void setFrames(uint32_t rendered, std::vector<std::string> settling);
 
   std::string table() const;
   /// Passes in execution order, and their medians.
@@ -36,6 +39,8 @@ class RenderStats {
  private:
   std::string device_, technique_;
   uint32_t width_, height_;
+  uint32_t framesRendered_ = 0;
+  std::vector<std::string> settling_;
   std::vector<std::string> order_;  // passes in execution order
   std::map<std::string, std::vector<double>> passMs_;
   std::map<std::string, std::vector<PassWork>> passWork_;
