@@ -3,7 +3,8 @@
 // each update into what they hold, a history that fills in) says so in every frame whose
 // results it would still change for a still view. Offline renders (`bounce-render` without
 // `--frames`, `bounce-bench`) render until a frame carries no note, as Unreal's Movie Render
-// Queue renders warm-up frames; interactive apps may show the notes.
+// Queue renders warm-up frames; the viewer shows the notes and keeps rendering a still view
+// while there are any.
 //
 //   noteSettling(graph, "DDGI: new probes warming up, sweep 3 of 54");   // in a pass hook
 //
