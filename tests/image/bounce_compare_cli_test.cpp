@@ -4,10 +4,10 @@
 
 #include "bounce/image/image_buffer.h"
 #include "config/scratch_folder.h"
+#include "support/command_output.h"
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -16,21 +16,10 @@
 namespace bounce {
 namespace {
 
-struct CommandResult {
-  int status;
-  std::string output;
-};
+using test::CommandResult;
 
 CommandResult compare(const std::string& args) {
-  const std::string cmd = std::string(BOUNCE_BINARY_DIR) + "/bin/bounce-compare " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  CommandResult r{-1, {}};
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::runCommand(std::string(BOUNCE_BINARY_DIR) + "/bin/bounce-compare " + args);
 }
 
 // An 8×8 RGB image: `left` in columns 0–3, `right` in 4–7.

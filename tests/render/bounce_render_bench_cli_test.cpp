@@ -3,10 +3,11 @@
 // and an unwritable --json path is a one-line error before anything is measured. (A
 // benchmark: nothing here checks a time.)
 
+#include "support/command_output.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -16,24 +17,13 @@
 namespace bounce {
 namespace {
 
-struct BenchResult {
-  int status;
-  std::string output;
-};
+using BenchResult = test::CommandResult;
 
 BenchResult runBench(const std::string& args) {
-  const std::string cmd =
+  return test::runCommand(
       std::string("cd ") + BOUNCE_SOURCE_DIR +
       " && BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR + "/shader-cache " +
-      BOUNCE_BINARY_DIR + "/bin/bounce-render-bench " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  BenchResult r{-1, {}};
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-  const int status = pclose(p);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+      BOUNCE_BINARY_DIR + "/bin/bounce-render-bench " + args);
 }
 
 TEST(BounceRenderBenchCli, WritesCeilingsAndEachPassesWorkAsJson) {

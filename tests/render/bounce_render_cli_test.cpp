@@ -4,12 +4,12 @@
 
 #include "bounce/image/image_buffer.h"
 #include "image/image_resample.h"
+#include "support/command_output.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -20,24 +20,13 @@
 namespace bounce {
 namespace {
 
-struct CommandResult {
-  int status;
-  std::string output;
-};
+using test::CommandResult;
 
 CommandResult run(const std::string& args, const std::string& environment = "") {
-  std::string cmd = std::string("cd ") + BOUNCE_SOURCE_DIR +
-                    " && BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
-                    "/shader-cache " + environment + " " + BOUNCE_BINARY_DIR + "/bin/bounce-render " + args +
-                    " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  CommandResult r{-1, {}};
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), p)) r.output += buf.data();
-  int status = pclose(p);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::runCommand(
+      std::string("cd ") + BOUNCE_SOURCE_DIR +
+      " && BOUNCE_VALIDATION=1 BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR + "/shader-cache " +
+      environment + " " + BOUNCE_BINARY_DIR + "/bin/bounce-render " + args);
 }
 
 std::string scratch(const std::string& name) {

@@ -3,6 +3,7 @@
 // when no display is set), with validation on, and comparisons of its screenshots.
 
 #include "bounce/image/image_buffer.h"
+#include "support/command_output.h"
 
 #include <gtest/gtest.h>
 
@@ -19,11 +20,6 @@
 #include <string_view>
 
 namespace bounce::test {
-
-struct CommandResult {
-  int status = -1;
-  std::string output;
-};
 
 inline std::filesystem::path scratchDir() {
   namespace fs = std::filesystem;
@@ -43,18 +39,11 @@ inline CommandResult runProgram(const std::string& program, const std::string& a
   // The synchronization checks pass through when the test runs with them (tests/sync_validation.cmake).
   const char* validation = std::getenv("BOUNCE_VALIDATION");
   const std::string mode = validation && std::string_view(validation) == "sync" ? "sync" : "1";
-  const std::string cmd =
-      std::string("cd ") + BOUNCE_SOURCE_DIR + " && XDG_RUNTIME_DIR=" + (dir / "runtime").string() +
-      " BOUNCE_VALIDATION=" + mode + " BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
-      "/shader-cache timeout 300 " + BOUNCE_BINARY_DIR + "/bin/" + program + " " + args + " 2>&1";
-  CommandResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buffer;
-  while (fgets(buffer.data(), int(buffer.size()), p)) r.output += buffer.data();
-  const int status = pclose(p);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  const std::string cmd = std::string("cd ") + BOUNCE_SOURCE_DIR +
+                          " && XDG_RUNTIME_DIR=" + (dir / "runtime").string() + " BOUNCE_VALIDATION=" + mode +
+                          " BOUNCE_USER_INI= BOUNCE_SHADER_CACHE=" + BOUNCE_BINARY_DIR +
+                          "/shader-cache timeout 300 " + BOUNCE_BINARY_DIR + "/bin/" + program + " " + args;
+  return runCommand(cmd);
 }
 
 inline CommandResult runViewer(const std::string& args) { return runProgram("bounce-viewer", args); }
