@@ -57,36 +57,32 @@ std::optional<Measurement> measureConfiguration(const Configuration& config, con
                                                options.width, options.height);
   RenderStats stats(device.name(), options.width, options.height, engine.technique());
   RenderedFrame last;
-  // A technique whose results build up over frames is measured once they have settled
-  // (bounce/frame/settling.h), as bounce-render renders by default: untimed frames until
-  // one leaves no settling note, at most kMostSettlingFrames.
-  constexpr uint32_t kMostSettlingFrames = 1000;
-  uint64_t frameIndex = 0;
-  for (; frameIndex < kMostSettlingFrames; ++frameIndex) {
-    RenderedFrame frame = renderer.render(view, {}, frameIndex);
-    if (!frame.gpu.ok()) {
-      if (error) *error = fmt::format("{}: {}", config.label, frame.gpu.errors.front());
-      return std::nullopt;
-    }
-    if (frame.settling.empty()) break;
-  }
-  const uint64_t settled = frameIndex;
+  // The first frame compiles pipelines and builds acceleration structures: it is untimed
+  // unless it is the only one. A technique whose results build up over frames is measured
+  // once they have settled (bounce/frame/settling.h), as bounce-render renders by default:
+  // the first frame is then the first that leaves no settling note (at most
+  // kMostSettlingFrames), and the frames before it are untimed too.
+  constexpr uint64_t kMostSettlingFrames = 1000;
+  const FrameOutputs measured{{"radiance", "indirect-irradiance"}, true};
+  uint64_t index = 0, settlingFrames = 0;
   for (uint32_t f = 0; f < options.frames; ++f) {
-    FrameOutputs outputs;
-    if (f + 1 == options.frames) outputs = {{"radiance", "indirect-irradiance"}, true};
-    RenderedFrame frame = renderer.render(view, outputs, settled + f + 1);
-    if (!frame.gpu.ok()) {
-      if (error) *error = fmt::format("{}: {}", config.label, frame.gpu.errors.front());
-      return std::nullopt;
-    }
-    // The first frame compiles pipelines and builds acceleration structures: not timed.
+    const bool lastFrame = f + 1 == options.frames;
+    RenderedFrame frame;
+    do {
+      frame = renderer.render(view, lastFrame ? measured : FrameOutputs{}, index++);
+      if (!frame.gpu.ok()) {
+        if (error) *error = fmt::format("{}: {}", config.label, frame.gpu.errors.front());
+        return std::nullopt;
+      }
+    } while (f == 0 && !frame.settling.empty() && index < kMostSettlingFrames);
+    if (f == 0) settlingFrames = index - 1;
     if (f > 0 || options.frames == 1) stats.addFrame(frame.gpu, frame.cpu);
-    if (f + 1 == options.frames) last = std::move(frame);
+    if (lastFrame) last = std::move(frame);
   }
 
   Measurement m;
   m.config = config;
-  m.settlingFrames = settled;
+  m.settlingFrames = settlingFrames;
   m.gpuMs = stats.frameMedian();
   m.cpuMs = stats.cpuMedian();
   m.totalMs = m.gpuMs + m.cpuMs;
