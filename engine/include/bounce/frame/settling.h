@@ -6,7 +6,7 @@
 // Queue renders warm-up frames; the viewer shows the notes and keeps rendering a still view
 // while there are any.
 //
-//   noteSettling(graph, "DDGI: new probes warming up, sweep 3 of 54");   // in a pass hook
+//   noteSettling(graph, "MyGi: history 3 of 16 frames");   // in a pass hook, every such frame
 //
 // A note is a promise that the frames after it move towards the settled result: a technique
 // that changes every frame for ever (noise with no accumulation) notes nothing.
