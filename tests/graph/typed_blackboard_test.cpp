@@ -72,5 +72,18 @@ TEST(SettlingNotes, EveryHooksNoteIsKeptAndAFrameWithoutAnyHasSettled) {
   EXPECT_TRUE(settlingNotes(next).empty());
 }
 
+TEST(SettlingNotes, ReadBacksAddTheirsAfterTheHooksOnesAndOneListServesEveryPass) {
+  RenderGraph graph;
+  std::shared_ptr<SettlingNotes> first = lateSettlingNotes(graph), second = lateSettlingNotes(graph);
+  EXPECT_EQ(first, second);
+  noteSettling(graph, "A: warming up");
+  EXPECT_EQ(settlingNotes(graph), (std::vector<std::string>{"A: warming up"}));
+  first->notes.push_back("B: list overflowed");  // as a ReadbackFn does, once the frame has run
+  EXPECT_EQ(settlingNotes(graph), (std::vector<std::string>{"A: warming up", "B: list overflowed"}));
+  RenderGraph next;
+  EXPECT_NE(lateSettlingNotes(next), first);
+  EXPECT_TRUE(settlingNotes(next).empty());
+}
+
 }  // namespace
 }  // namespace bounce

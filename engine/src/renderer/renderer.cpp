@@ -81,8 +81,9 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
     rayTracing_->declare(g, f);
   };
   out.cpu = engine_.buildFrame(graph, frame, stages);
-  out.settling = settlingNotes(graph);
   out.gpu = gpu::runFrame(*executor_, graph, frame, *scene_, &out.graph);
+  // After the frame: its read-backs may have added notes (lateSettlingNotes).
+  out.settling = settlingNotes(graph);
   engine_.events().frameCompleted.emit({frameIndex, view, out.gpu.frameMilliseconds, out.gpu.ok()});
 
   auto want = [&](const std::string& name) {

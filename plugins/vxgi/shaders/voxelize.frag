@@ -7,24 +7,21 @@
 #extension GL_EXT_shader_atomic_float : require
 // VXGI_MULTI_BOUNCE (set by the plugin while r.VXGI.Bounces > 1, never in ambient-occlusion
 // mode): each surface also sends out the indirect light the clip-map as it stands gathers
-// at it (below), so the emittance holds bounced light too.
+// at it; bounce_gather.comp traces the cones and adds that light (below).
 #ifndef VXGI_MULTI_BOUNCE
 #define VXGI_MULTI_BOUNCE 0
 #endif
-#define VXGI_CLIP_MAP_TEXTURES VXGI_MULTI_BOUNCE
+#define VXGI_CLIP_MAP_TEXTURES 0
 #include "bounce/common.glsl"
 #include "bounce/scene.glsl"
 #include "bounce/lights.glsl"
 #include "vxgi/clip_map.glsl"
 #include "vxgi/scratch.glsl"
-#if VXGI_MULTI_BOUNCE
-#include "vxgi/diffuse_gather.glsl"
-#endif
 #define WORK_COUNTERS_BINDING 40
 #include "bounce/work_counters.glsl"  // before shadows.glsl: its taps count themselves
 
-// bounce: x cones of the multi-bounce gather (0: none this voxelization), y their step
-// factor, z their range (m), w their normal offset (voxels).
+// bounce: x cones of the multi-bounce gather (0: none this voxelization); y..w (their step
+// factor, range and normal offset) are bounce_gather.comp's.
 SCENE_DRAW_PUSH_CONSTANTS(ivec4 regionMin; ivec4 regionMax; ivec4 innerMin; ivec4 innerMax; ivec4 scratchLayout;
                           vec4 ambient; vec4 bounce;)
 
@@ -39,6 +36,16 @@ layout(binding = 29) uniform sampler2D emissiveTexture;
 layout(binding = 21, r32f) uniform coherent image3D scratch;
 // Bricks that received sums this frame (vxgi/scratch.glsl): the resolve skips the others.
 layout(std430, binding = 60) buffer VxgiBrickOccupancy { uint brickOccupancy[]; };
+#include "vxgi/voxel_column.glsl"
+#if VXGI_MULTI_BOUNCE
+// Multi-bounce gathers handed to bounce_gather.comp: x its workgroups (one per
+// VXGI_BOUNCE_GROUP requests), w the requests made (some may not have fitted).
+layout(std430, binding = 61) buffer VxgiBounceRequests {
+  uvec4 bounceHeader;
+  VxgiBounceRequest bounceRequests[];
+};
+const uint VXGI_BOUNCE_GROUP = 64u;  // bounce_gather.comp's local size
+#endif
 // Per material: x thickness (voxels), y proportional emittance, z omni-directional.
 layout(std430, binding = 22) readonly buffer VxgiMaterialParams { vec4 materialParams[]; };
 // Per light: 1 when it is flagged "VXGI indirect lighting".
@@ -92,20 +99,6 @@ float pixelCoverage(vec2 pixel, vec2 p0, vec2 p1, vec2 p2) {
   return clamp(abs(area), 0.0, 1.0);
 }
 
-#if VXGI_MULTI_BOUNCE
-// PCG3D (Jarzynski and Olano, JCGT 2020): three well-mixed words from three.
-uvec3 pcg3d(uvec3 v) {
-  v = v * 1664525u + 1013904223u;
-  v.x += v.y * v.z;
-  v.y += v.z * v.x;
-  v.z += v.x * v.y;
-  v ^= v >> 16u;
-  v.x += v.y * v.z;
-  v.y += v.z * v.x;
-  v.z += v.x * v.y;
-  return v;
-}
-#endif
 
 bool inBox(ivec3 c, ivec4 lo, ivec4 hi) { return all(greaterThanEqual(c, lo.xyz)) && all(lessThan(c, hi.xyz)); }
 
@@ -200,73 +193,53 @@ void main() {
   // extrapolated far out for a sliver triangle could make the span huge.
   if (!(abs(depth) < 1e6)) discard;
   int k0 = int(first), k1 = min(int(last), k0 + 8);
+  // The column's voxels this level writes: inside the plan's box, outside the inner box (a
+  // coarser level's inner box is the finer level's downsampled).
+  VxgiVoxelColumn column;
+  column.first = c;
+  column.first[gAxis] = k0;
+  column.axis = gAxis;
+  column.mask = 0u;
+  for (int k = k0; k <= k1; ++k) {
+    ivec3 voxel = c;
+    voxel[gAxis] = k;
+    if (inBox(voxel, draw.regionMin, draw.regionMax) && !inBox(voxel, draw.innerMin, draw.innerMax))
+      column.mask |= 1u << uint(k - k0);
+  }
+  if (column.mask == 0u) discard;
+  VxgiSurfacePiece piece;
+  piece.normal = n;
+  piece.coverage = coverage;
+  piece.doubleSided = doubleSided;
+  piece.proportional = proportional;
+  piece.omni = omni;
 #if VXGI_MULTI_BOUNCE
   // Multi-bounce: the surface also reflects the indirect light that reaches it, gathered by
   // diffuse cones from the clip-map as the last voxelization left it (which held the
   // bounces before, so each voxelization adds one; the plugin re-voxelizes until
-  // r.VXGI.Bounces are in). Only fragments that write a voxel gather: the inner box of a
-  // coarser level is the finer level's downsampled.
-  int bounceCones = int(draw.bounce.x);
-  bool writes = false;
-  for (int k = k0; k <= k1; ++k) {
-    ivec3 voxel = c;
-    voxel[gAxis] = k;
-    writes = writes || (inBox(voxel, draw.regionMin, draw.regionMax) && !inBox(voxel, draw.innerMin, draw.innerMax));
-  }
-  if (!writes) discard;
-  if (bounceCones > 0 && any(greaterThan(albedo, vec3(0.0)))) {
-    // Each voxel column turns the cone pattern about the normal its own way: the cones that
-    // read this emittance average it over many voxels, and so over many turns, where one
-    // fixed pattern would give every surface the same directional bias. Only a turn: cones
-    // also moved outwards within their rings (up to grazing) lost 2.8% of the white
-    // furnace's light per bounce, against 1.3% with each at its ring's middle.
-    float turn = float(pcg3d(uvec3(c) + uvec3(uint(gAxis) << 30)).x >> 8) * (1.0 / 16777216.0);
-    ConeTracingArguments args = vxgiSurfaceCone(gWorld, n, draw.bounce.w, draw.bounce.y, draw.bounce.z);
-    front += albedo * INV_PI * vxgiGatherDiffuse(args, n, bounceCones, turn).irradiance;
-    if (doubleSided) {
-      args = vxgiSurfaceCone(gWorld, -n, draw.bounce.w, draw.bounce.y, draw.bounce.z);
-      back += albedo * INV_PI * vxgiGatherDiffuse(args, -n, bounceCones, turn).irradiance;
+  // r.VXGI.Bounces are in). bounce_gather.comp traces the cones and adds the light to this
+  // column's sums after the draw: a CPU device runs a fragment shader on the threads of the
+  // target's tiles, and a 64² voxelization target is one tile, one core. Traced here, the
+  // cones cost 56 ns a texture sample; there 13 (lavapipe, 2 cores; VXGI README). A request
+  // that does not fit in the list is dropped and counted: the plugin voxelizes again with a
+  // longer one (tracing it here instead costs every fragment the untaken branch, since a
+  // CPU device runs both sides of a branch under a mask: 11 → 28 ms a voxelization).
+  if (draw.bounce.x > 0.0 && any(greaterThan(albedo, vec3(0.0)))) {
+    uint slot = atomicAdd(bounceHeader.w, 1u);
+    if (slot < uint(bounceRequests.length())) {
+      bounceRequests[slot] = vxgiPackBounceRequest(gWorld, albedo, column, piece);
+      if (slot % VXGI_BOUNCE_GROUP == 0u) atomicAdd(bounceHeader.x, 1u);
+      countWork(WORK_BUFFER_BYTES, 64u + 8u);  // the request, and the count's atomic
     }
-    countWork(WORK_TEXTURE_SAMPLES, vxgiFetches);
   }
 #endif
 #if !VXGI_AO_MODE
   front = sanitize(front, HALF_MAX);
   back = sanitize(back, HALF_MAX);
-#endif
-  int perDirection = draw.scratchLayout.y;  // 4 (rgb·w, w) or 1 (w, AO mode)
-  for (int k = k0; k <= k1; ++k) {
-    ivec3 voxel = c;
-    voxel[gAxis] = k;
-    if (!inBox(voxel, draw.regionMin, draw.regionMax) || inBox(voxel, draw.innerMin, draw.innerMax)) continue;
-    ivec3 t = vxgiWrap(voxel);
-    uint atomics = 0u;  // float atomic adds into the scratch volume: 4 bytes read, 4 written
-    for (int axis = 0; axis < 3; ++axis) {
-      for (int s = 0; s < 2; ++s) {
-        float facing = s == 0 ? n[axis] : -n[axis];  // > 0: the front faces direction ±axis
-        bool frontSide = facing > 0.0;
-        // Omni-directional: an isotropic voxel, as opaque and as bright every way.
-        float w = omni ? 1.0 : (frontSide || doubleSided ? coverage[axis] : 0.0);
-        if (w <= 0.0) continue;
-        // Not proportional: the surface's full radiance leaves every voxel it touches.
-        float emitWeight = proportional ? w : 1.0;
-        int direction = VXGI_DIRECTIONS == 6 ? axis + 3 * s : axis;
-        int base = direction * perDirection;
-#if VXGI_AO_MODE
-        imageAtomicAdd(scratch, vxgiScratchCoord(t, base, draw.scratchLayout.x), w);
-        atomics += 1u;
 #else
-        vec3 radiance = frontSide || omni ? front : back;  // omni: the front radiance, every way
-        imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 3, draw.scratchLayout.x), w);
-        imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 0, draw.scratchLayout.x), radiance.r * emitWeight);
-        imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 1, draw.scratchLayout.x), radiance.g * emitWeight);
-        imageAtomicAdd(scratch, vxgiScratchCoord(t, base + 2, draw.scratchLayout.x), radiance.b * emitWeight);
-        atomics += 4u;
+  vec3 front = vec3(0.0), back = vec3(0.0);
 #endif
-      }
-    }
-    countWork(WORK_IMAGE_BYTES, 8u * atomics);
-    // The voxel has sums: the resolve reads only such voxels' (vxgi/scratch.glsl).
-    if (atomics > 0u) atomicOr(brickOccupancy[vxgiVoxelBitWord(t)], vxgiVoxelBit(t));
-  }
+  // countWork expands to nothing in frames that do not count: the call stays outside it.
+  uint atomics = vxgiAddColumnSums(column, piece, front, back, draw.scratchLayout);
+  countWork(WORK_IMAGE_BYTES, 8u * atomics);  // float atomic adds: 4 bytes read, 4 written
 }

@@ -108,7 +108,7 @@ VoxelizationPlan ClipMapUpdate::plan(const Scene& scene, const ClipMapLayout& la
   };
   if (!committed_ || !(committed_->format() == layout.format()) ||
       committed_->voxelSize0() != layout.voxelSize0())
-    return everything("clip-map created", true);
+    return everything(committed_ ? "clip-map created" : invalidatedFor_, true);
   if (scene_ != &scene) return everything("new scene", true);
   if (!forced.empty()) return everything(std::string(forced));
   // Scene edits first: the settings key also hashes per-object flags, and an edit in the

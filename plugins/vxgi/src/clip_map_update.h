@@ -77,10 +77,12 @@ class ClipMapUpdate {
   void decideResolves(VoxelizationPlan& plan) const;
   /// The plan's work reached the GPU: its layout is what the textures now hold.
   void commit(const VoxelizationPlan& plan);
-  /// Forget everything (textures were re-created).
-  void invalidate() {
+  /// Forget everything: the next plan voxelizes every level afresh, for `why` (textures
+  /// were re-created, or what they hold is known to be incomplete).
+  void invalidate(std::string why = "clip-map created") {
     committed_.reset();
     holds_.clear();
+    invalidatedFor_ = std::move(why);
   }
 
  private:
@@ -89,6 +91,7 @@ class ClipMapUpdate {
   bool levelMoved(uint32_t level, const ClipMapLayout& layout) const;
 
   std::optional<ClipMapLayout> committed_;
+  std::string invalidatedFor_ = "clip-map created";  // the reason a plan gives while nothing is committed
   /// Per level: whether its voxels outside its inner box may hold anything its next whole
   /// resolve would have to clear (absent: unknown, so yes).
   std::vector<bool> holds_;

@@ -1,5 +1,6 @@
 #include "vxgi_passes.h"
 
+#include <bounce/frame/settling.h>
 #include <bounce/gpu/barriers.h>
 #include <bounce/gpu/device_capabilities.h>
 #include <bounce/gpu/pass_context.h>
@@ -8,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cstring>
 #include <memory>
 #include <optional>
 
@@ -107,6 +109,9 @@ struct VoxelizePush {
   glm::vec4 bounce;   // x: gather cones (0: none), y: step factor, z: range (m), w: normal offset
 };
 static_assert(sizeof(VoxelizePush) <= 112);
+
+// One multi-bounce gather request (VxgiBounceRequest in vxgi/voxel_column.glsl): four vec4s.
+constexpr uint64_t kBounceRequestBytes = 4 * sizeof(glm::vec4);
 
 struct ResolvePush {
   glm::ivec4 boxMin, boxSize, scratchLayout;
@@ -250,6 +255,14 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   const bool multiBounce = plan.bounceCones > 0 && !format.ambientOcclusionMode;
   const glm::vec4 bounce(float(multiBounce ? plan.bounceCones : 0u), settings.tracingStep.get(),
                          settings.maxDistance.get(), settings.normalOffset.get());
+  // The gathers a level's fragments hand to bounce_gather.comp (voxelize.frag), as many as
+  // the plugin's record says; the count is read back after the frame.
+  const uint64_t bounceRequestCapacity =
+      record->bounceRequestCapacity > 0
+          ? record->bounceRequestCapacity
+          : initialBounceRequestCapacity(format.mapSize, settings.bounceGatherList.get());
+  const uint64_t bounceRequestBytes = sizeof(glm::uvec4) + bounceRequestCapacity * kBounceRequestBytes;
+  std::shared_ptr<SettlingNotes> lateNotes = multiBounce ? lateSettlingNotes(graph) : nullptr;
 
   BufferHandle materialBuffer, lightBuffer;
   graph.addPass(prefix + "VoxelizationInputs", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
@@ -301,6 +314,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       occupancy;  // VxgiBrickOccupancy: a bit per voxel of the level being voxelized, 2 words a brick
   BufferHandle resolveArguments, brickList;            // brick_list.comp's indirect dispatch and bricks
   BufferHandle downsampleArguments, downsampleBricks;  // downsample_list.comp's
+  BufferHandle bounceRequests;                         // voxelize.frag's for bounce_gather.comp
   const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
   const uint32_t bricksPerLevel = bricksPerAxis * bricksPerAxis * bricksPerAxis;
   const bool cpuDevice = frame.device && frame.device->cpu;
@@ -335,6 +349,11 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
               b.createBuffer(fmt::format("VXGI.DownsampleArguments.L{}", level), {sizeof(glm::uvec4)});
           downsampleBricks = b.createBuffer(fmt::format("VXGI.DownsampleBricks.L{}", level),
                                             {(1 + uint64_t(bricksPerLevel)) * sizeof(uint32_t)});
+          if (multiBounce) {
+            bounceRequests =
+                b.createBuffer(fmt::format("VXGI.BounceRequests.L{}", level), {bounceRequestBytes});
+            bounceRequests = b.write(bounceRequests, Access::TransferDst);
+          }
           occupancy = b.write(occupancy, Access::TransferDst);
           resolveArguments = b.write(resolveArguments, Access::TransferDst);
           brickList = b.write(brickList, Access::TransferDst);
@@ -342,8 +361,14 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           downsampleBricks = b.write(downsampleBricks, Access::TransferDst);
           b.condition(decide);
           BufferHandle occupied = occupancy, arguments = resolveArguments, list = brickList,
-                       downsampleArgs = downsampleArguments, downsampleList = downsampleBricks;
+                       downsampleArgs = downsampleArguments, downsampleList = downsampleBricks,
+                       requests = bounceRequests;
           return [=](PassContext& ctx) {
+            // No bounce gathers yet, and no workgroups to trace them (voxelize.frag counts both).
+            if (requests) {
+              const glm::uvec4 noRequests(0u, 1u, 1u, 0u);
+              vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(requests).handle(), 0, sizeof(noRequests), &noRequests);
+            }
             vkCmdFillBuffer(ctx.cmd(), ctx.buffer(occupied).handle(), 0, VK_WHOLE_SIZE, 0u);
             // No workgroups and no bricks listed yet (brick_list.comp counts them).
             const glm::uvec4 noGroups(0u, 1u, 1u, 0u);
@@ -377,14 +402,11 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           BufferHandle lights = b.read(bb.buffer(channels::SceneLights), Access::StorageRead);
           BufferHandle matrices = b.read(bb.buffer(channels::ShadowMatrices), Access::StorageRead);
           TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
-          // Multi-bounce: the fragments gather from the clip-map as it stands (the finer levels
-          // already this frame's).
-          std::vector<TextureHandle> gatherFrom;
-          if (multiBounce)
-            for (TextureHandle t : handles.clip) gatherFrom.push_back(b.read(t, Access::Sampled));
+          // Multi-bounce: the fragments list their gathers for VXGI.BounceGather.
+          if (multiBounce) bounceRequests = b.write(bounceRequests, Access::StorageReadWrite);
           b.condition(decide);
           TextureHandle scratchHandle = scratchTexture;
-          BufferHandle occupied = occupancy;
+          BufferHandle occupied = occupancy, requests = bounceRequests;
           return [=](PassContext& ctx) {
             gpu::GraphicsPipelineDesc pd;
             pd.vertex = shader(shaders, "voxelize.vert", format);
@@ -409,8 +431,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                            gpu::SamplerKind::ShadowCompare)
                 .storage("scratch", scratchHandle)
                 .buffer("VxgiBrickOccupancy", occupied);
-            for (size_t t = 0; t < gatherFrom.size(); ++t)
-              common.texture(fmt::format("voxelsClip{}", t), gatherFrom[t], gpu::SamplerKind::LinearRepeat);
+            if (requests) common.buffer("VxgiBounceRequests", requests);
             ctx.beginRendering({.colors = {{target, std::nullopt}}});
             uint64_t triangles = 0;
             for (size_t i = 0; i < boxes.size(); ++i) {
@@ -467,6 +488,55 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                         }
                       };
                     });
+
+    if (multiBounce)
+      graph.addPass(
+          fmt::format("{}BounceGather.L{}", prefix, level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+            scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
+            BufferHandle constants = b.read(handles.constants, Access::Uniform);
+            BufferHandle arguments = b.read(bounceRequests, Access::Indirect);
+            BufferHandle requests = b.read(bounceRequests, Access::StorageRead);
+            BufferHandle count = b.read(bounceRequests, Access::TransferSrc);
+            // The clip-map as it stands: the finer levels already this frame's.
+            std::vector<TextureHandle> gatherFrom;
+            for (TextureHandle t : handles.clip) gatherFrom.push_back(b.read(t, Access::Sampled));
+            b.condition(decide);
+            TextureHandle sums = scratchTexture;
+            return [=](PassContext& ctx) {
+              const gpu::Pipeline& pipeline =
+                  ctx.pipelines().compute(shader(shaders, "bounce_gather.comp", format));
+              gpu::Bindings bind;
+              bind.buffer("clipMap", constants)
+                  .storage("scratch", sums)
+                  .buffer("VxgiBounceRequests", requests);
+              for (size_t t = 0; t < gatherFrom.size(); ++t)
+                bind.texture(fmt::format("voxelsClip{}", t), gatherFrom[t], gpu::SamplerKind::LinearRepeat);
+              struct {
+                glm::ivec4 scratchLayout;
+                glm::vec4 bounce;
+              } push{glm::ivec4(int32_t(scratch.perRow), 4, 0, 0), bounce};
+              ctx.dispatchIndirect(pipeline, bind, arguments, push);
+              // How many the fragments asked for (the header's w). A surface whose
+              // gather did not fit lacks its bounce light this frame: the plugin
+              // voxelizes again with room for all, and this frame says so.
+              ctx.readback(
+                  count,
+                  [record, lateNotes, level,
+                   capacity = bounceRequestCapacity](std::span<const std::byte> bytes) {
+                    uint32_t made = 0;
+                    if (bytes.size() < sizeof(made)) return;
+                    std::memcpy(&made, bytes.data(), sizeof(made));
+                    if (made <= capacity) return;
+                    record->bounceRequestsWanted = std::max<uint64_t>(record->bounceRequestsWanted, made);
+                    if (capacity < kMostBounceRequests)
+                      lateNotes->notes.push_back(
+                          fmt::format("VXGI: level {} asked for {} multi-bounce gathers, its list holds {}; "
+                                      "voxelizing again with room for them",
+                                      level, made, capacity));
+                  },
+                  3 * sizeof(uint32_t), sizeof(uint32_t));
+            };
+          });
 
     // A level resolved whole (a full re-voxelization) need only write the bricks that
     // received sums or may hold something from before: brick_list.comp lists them, and the

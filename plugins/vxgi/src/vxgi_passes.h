@@ -11,6 +11,7 @@
 #include <bounce/frame/frame_context.h>
 #include <bounce/graph/render_graph.h>
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 
@@ -23,7 +24,25 @@ void addConstantsPass(RenderGraph& graph, ClipMapHandles& handles, const ClipMap
 /// vxgi.Status).
 struct VoxelizationRecord {
   std::vector<uint64_t> triangles;  ///< per level, at its last voxelization
+  /// Multi-bounce: the gathers a level's list holds (voxelize.frag hands them to
+  /// bounce_gather.comp), set by the plugin; and the most any level of a frame asked for,
+  /// read back after the frame. More than fit: those surfaces missed their bounce light,
+  /// and the plugin voxelizes again with a longer list (VxgiPlugin::voxelization).
+  uint64_t bounceRequestCapacity = 0;
+  uint64_t bounceRequestsWanted = 0;
 };
+
+/// The most gathers a level's list may hold: 2^21 (128 MiB).
+inline constexpr uint64_t kMostBounceRequests = uint64_t(1) << 21;
+/// A fresh list's room: `asked` (r.VXGI.BounceGatherList), or when 0 eight gathers per voxel
+/// column of the level's voxelization target: a closed room that fills a level is six faces
+/// of columns. The busiest level of the Cornell box asks for 15,456 at 64³ (32,768 places),
+/// 50,070 at 128³ and 179,096 at 256³; of the generated sunlit rooms 11,368–11,766, 38,604–
+/// 40,414 and 142,114–150,038.
+inline uint64_t initialBounceRequestCapacity(uint32_t mapSize, int32_t asked) {
+  const uint64_t room = asked > 0 ? uint64_t(asked) : uint64_t(mapSize) * mapSize * 8u;
+  return std::clamp<uint64_t>(room, 1, kMostBounceRequests);
+}
 
 /// Per level of the plan: whether a voxelized surface (or the test cube) may be drawn into
 /// its boxes outside its inner box (VoxelizationPlan::draws; instance bounds, so true when

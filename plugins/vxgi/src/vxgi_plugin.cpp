@@ -25,6 +25,8 @@
 #include <bounce/core/value_hash.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <bit>
 #include <functional>
 #include <optional>
 
@@ -136,9 +138,33 @@ class VxgiPlugin final : public Plugin {
       log::warn("VXGI: {}; keeping the previous clip-map", error);
       format = textures_.format();
     }
-    if (textures_.configure(format)) {
+    const int32_t gatherList = settings_.bounceGatherList.get();
+    if (textures_.configure(format) || gatherList != gatherListAsked_) {
       update_.invalidate();
       bounces_.reset();
+      record_->bounceRequestCapacity = initialBounceRequestCapacity(format.mapSize, gatherList);
+      record_->bounceRequestsWanted = 0;
+      gatherListAsked_ = gatherList;
+    }
+    // A level's multi-bounce gathers overflowed their list last frame: those surfaces lack
+    // their bounce light, which no later frame of a static scene would add. Voxelize afresh
+    // with room for them (up to the most a list may hold; past that, once with a warning).
+    if (record_->bounceRequestsWanted > record_->bounceRequestCapacity) {
+      const uint64_t room = std::min(std::bit_ceil(record_->bounceRequestsWanted), kMostBounceRequests);
+      if (room > record_->bounceRequestCapacity) {
+        log::info("VXGI: {} multi-bounce gathers in a level's list of {}; voxelizing again with room for {}",
+                  record_->bounceRequestsWanted, record_->bounceRequestCapacity, room);
+        record_->bounceRequestCapacity = room;
+        update_.invalidate(fmt::format("multi-bounce gathers overflowed their list; now {}", room));
+        bounces_.reset();
+      } else if (!bounceOverflowWarned_) {
+        bounceOverflowWarned_ = true;
+        log::warn(
+            "VXGI: {} multi-bounce gathers in a level, more than the {} a list holds; the rest of "
+            "the level's surfaces reflect one bounce less (lower r.VXGI.MapSize)",
+            record_->bounceRequestsWanted, kMostBounceRequests);
+      }
+      record_->bounceRequestsWanted = 0;
     }
     const float requested = settings_.voxelSize.get();
     const float voxelSize =
@@ -247,6 +273,8 @@ class VxgiPlugin final : public Plugin {
   std::optional<ClipMapLayout> lastLayout_;
   std::string lastPlanReason_ = "not rendered yet";
   std::shared_ptr<VoxelizationRecord> record_ = std::make_shared<VoxelizationRecord>();
+  bool bounceOverflowWarned_ = false;  // the largest list overflowed (warned once)
+  int32_t gatherListAsked_ = -1;       // r.VXGI.BounceGatherList the lists were sized for
   TemporalHistory history_;
 };
 

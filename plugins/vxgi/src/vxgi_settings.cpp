@@ -161,6 +161,17 @@ void VxgiSettings::declare(PluginContext& ctx) {
        .outOfRange = RangePolicy::Clamp,
        .ini = {"VXGI", "VxgiBounceCones"},
        .category = clip});
+  bounceGatherList = ctx.addCVar<int32_t>(
+      {.name = "r.VXGI.BounceGatherList",
+       .defaultValue = 0,
+       .help = "Multi-bounce gathers a level's list holds at first, 64 bytes each (0: eight per voxel "
+               "column of the level, e.g. 32768 at VxgiMapSize=64). A list that overflows grows, and "
+               "the clip-map is voxelized again on the next frame.",
+       .min = 0,
+       .max = 1 << 21,
+       .outOfRange = RangePolicy::Clamp,
+       .ini = {"VXGI", "VxgiBounceGatherList"},
+       .category = clip});
   emittanceAmbient = ctx.addCVar<float>(
       {.name = "r.VXGI.EmittanceAmbient",
        .defaultValue = 0.0f,

@@ -37,6 +37,7 @@ struct VxgiSettings {
   CVarRef<float> voxelizationMeshError;  ///< low-detail meshes: tolerated deviation, in voxels of the level
   CVarRef<int32_t> bounces;              ///< r.VXGI.Bounces: 1 the seed's one bounce; more re-voxelize
   CVarRef<int32_t> bounceCones;          ///< r.VXGI.BounceCones: the voxelizer's gather per surface
+  CVarRef<int32_t> bounceGatherList;  ///< r.VXGI.BounceGatherList: a level's gathers at first (0: automatic)
   // Tracing (post-process-volume settings where users tune them per area).
   CVarRef<bool> diffuseEnable, specularEnable;
   CVarRef<int32_t> diffuseCones, diffuseSparsity;

@@ -121,6 +121,42 @@ TEST_F(VxgiMultiBounce, AMovedObjectIsVoxelizedAgainForEachBounceThenNoMore) {
   EXPECT_LT(std::stol(reasons[1].substr(at + 2)), 32 * 32 * 32 / 8) << reasons[1];
 }
 
+TEST_F(VxgiMultiBounce, AGatherListThatOverflowsGrowsAndTheNextFrameHasEveryBounce) {
+  // The voxelizer lists each surface's gather for bounce_gather.comp. With room for 64 (the
+  // Cornell box asks for thousands a level) most surfaces miss their bounce light: the frame
+  // says so, and the next one voxelizes afresh with a list that holds them all, giving what
+  // a list that was long enough from the start gives.
+  const std::vector<std::string> settings = with(kSmall, {"r.VXGI.Bounces=3"});
+  start("content/cornell_box.gltf", with(settings, {"r.VXGI.BounceGatherList=64"}), "VXGI");
+  RenderedFrame overflowed = render(24, 24, {"indirect-irradiance"});
+  ASSERT_FALSE(overflowed.settling.empty());
+  EXPECT_NE(overflowed.settling.front().find("multi-bounce gathers"), std::string::npos)
+      << overflowed.settling.front();
+  RenderedFrame grown = render(24, 24, {"indirect-irradiance"});
+  EXPECT_TRUE(grown.settling.empty()) << grown.settling.front();
+  const CompiledPass* voxelize = grown.graph.find("VXGI.Voxelize.L0");
+  ASSERT_NE(voxelize, nullptr);
+  EXPECT_TRUE(voxelize->executed);
+  EXPECT_NE(voxelize->reason.find("overflowed"), std::string::npos) << voxelize->reason;
+  EXPECT_TRUE(grown.graph.executed("VXGI.Bounce0.Voxelize.L0"));  // every bounce again
+  RenderedFrame still = render(24, 24, {"indirect-irradiance"});
+  EXPECT_TRUE(still.settling.empty());
+  EXPECT_FALSE(still.graph.executed("VXGI.Voxelize.L0"));
+  finish();
+
+  start("content/cornell_box.gltf", settings, "VXGI");
+  RenderedFrame roomy = render(24, 24, {"indirect-irradiance"});
+  EXPECT_TRUE(roomy.settling.empty());
+  finish();
+  const ImageBuffer& reference = roomy.images.at("indirect-irradiance");
+  const double missing = largestDifference(overflowed.images.at("indirect-irradiance"), reference),
+               worst = largestDifference(grown.images.at("indirect-irradiance"), reference);
+  std::printf("overflowed list: %.4f W/m² from a long enough one; grown: %.6f\n", missing, worst);
+  EXPECT_GT(missing, 0.05) << "the overflow must cost light for the comparison to mean anything";
+  // Float atomics add in another order: a rounding-level difference.
+  EXPECT_LT(worst, 1e-3 * missing);
+}
+
 TEST_F(VxgiMultiBounce, NothingToBounceVoxelizesOnce) {
   // Voxelized surfaces, but no light that VXGI voxelizes and nothing emissive: every gather
   // would read black, so the fresh frame voxelizes once, as with one bounce. The same scene

@@ -13,6 +13,7 @@
 
 #include "bounce/graph/render_graph.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,8 @@ struct SettlingNotes {
   std::vector<std::string> notes;
 };
 inline constexpr BlackboardKey<SettlingNotes> kSettlingNotes{"frame.settling"};
+/// Those read-backs add (lateSettlingNotes).
+inline constexpr BlackboardKey<std::shared_ptr<SettlingNotes>> kLateSettlingNotes{"frame.settling.late"};
 
 /// Adds a note to this frame's graph.
 inline void noteSettling(RenderGraph& graph, std::string why) {
@@ -31,10 +34,27 @@ inline void noteSettling(RenderGraph& graph, std::string why) {
   notes->notes.push_back(std::move(why));
 }
 
-/// The notes hooks left in `graph` (empty: the frame's results are settled).
+/// Notes that only the frame's GPU results can tell: a pass reads something back and finds
+/// this frame's results incomplete (a list that overflowed, to be redone next frame with
+/// room). Take the list while building the graph and add to it from the ReadbackFn, which
+/// runs once the frame's GPU work has completed; the frame's notes include them.
+///
+///   auto late = lateSettlingNotes(graph);                       // in the pass's setup
+///   ctx.readback(h, [late](auto bytes) { if (...) late->notes.push_back("MyGi: ..."); });
+inline std::shared_ptr<SettlingNotes> lateSettlingNotes(RenderGraph& graph) {
+  std::shared_ptr<SettlingNotes>* late = graph.blackboard().get(kLateSettlingNotes);
+  if (!late) late = &graph.blackboard().set(kLateSettlingNotes, std::make_shared<SettlingNotes>());
+  return *late;
+}
+
+/// The notes hooks left in `graph` (empty: the frame's results are settled), and once the
+/// frame has run, those its read-backs added (lateSettlingNotes).
 inline std::vector<std::string> settlingNotes(const RenderGraph& graph) {
   const SettlingNotes* notes = graph.blackboard().get(kSettlingNotes);
-  return notes ? notes->notes : std::vector<std::string>{};
+  std::vector<std::string> all = notes ? notes->notes : std::vector<std::string>{};
+  if (const std::shared_ptr<SettlingNotes>* late = graph.blackboard().get(kLateSettlingNotes); late && *late)
+    all.insert(all.end(), (*late)->notes.begin(), (*late)->notes.end());
+  return all;
 }
 
 }  // namespace bounce
