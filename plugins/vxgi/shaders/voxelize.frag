@@ -7,7 +7,7 @@
 #extension GL_EXT_shader_atomic_float : require
 // VXGI_MULTI_BOUNCE (set by the plugin while r.VXGI.Bounces > 1, never in ambient-occlusion
 // mode): each surface also sends out the indirect light the clip-map as it stands gathers
-// at it; bounce_gather.comp traces the cones and adds that light (below).
+// at it; the bounce passes (vxgi/bounce_requests.glsl) trace the cones and add that light.
 #ifndef VXGI_MULTI_BOUNCE
 #define VXGI_MULTI_BOUNCE 0
 #endif
@@ -21,7 +21,7 @@
 #include "bounce/work_counters.glsl"  // before shadows.glsl: its taps count themselves
 
 // bounce: x cones of the multi-bounce gather (0: none this voxelization); y..w (their step
-// factor, range and normal offset) are bounce_gather.comp's.
+// factor, range and normal offset) are the bounce passes'.
 SCENE_DRAW_PUSH_CONSTANTS(ivec4 regionMin; ivec4 regionMax; ivec4 innerMin; ivec4 innerMax; ivec4 scratchLayout;
                           vec4 ambient; vec4 bounce;)
 
@@ -38,13 +38,13 @@ layout(binding = 21, r32f) uniform coherent image3D scratch;
 layout(std430, binding = 60) buffer VxgiBrickOccupancy { uint brickOccupancy[]; };
 #include "vxgi/voxel_column.glsl"
 #if VXGI_MULTI_BOUNCE
-// Multi-bounce gathers handed to bounce_gather.comp: x its workgroups (one per
-// VXGI_BOUNCE_GROUP requests), w the requests made (some may not have fitted).
+#include "vxgi/bounce_requests.glsl"
+// The gathers this level's fragments list: x the workgroups of the passes that take one
+// request a lane, w the requests made (more than fit when the list overflowed).
 layout(std430, binding = 61) buffer VxgiBounceRequests {
   uvec4 bounceHeader;
   VxgiBounceRequest bounceRequests[];
 };
-const uint VXGI_BOUNCE_GROUP = 64u;  // bounce_gather.comp's local size
 #endif
 // Per material: x thickness (voxels), y proportional emittance, z omni-directional.
 layout(std430, binding = 22) readonly buffer VxgiMaterialParams { vec4 materialParams[]; };
@@ -217,8 +217,8 @@ void main() {
   // Multi-bounce: the surface also reflects the indirect light that reaches it, gathered by
   // diffuse cones from the clip-map as the last voxelization left it (which held the
   // bounces before, so each voxelization adds one; the plugin re-voxelizes until
-  // r.VXGI.Bounces are in). bounce_gather.comp traces the cones and adds the light to this
-  // column's sums after the draw: a CPU device runs a fragment shader on the threads of the
+  // r.VXGI.Bounces are in). The bounce passes (vxgi/bounce_requests.glsl) trace the cones and
+  // add the light to this column's sums after the draw: a CPU device runs a fragment shader on the threads of the
   // target's tiles, and a 64² voxelization target is one tile, one core. Traced here, the
   // cones cost 56 ns a texture sample; there 13 (lavapipe, 2 cores; VXGI README). A request
   // that does not fit in the list is dropped and counted: the plugin voxelizes again with a

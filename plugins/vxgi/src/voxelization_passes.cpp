@@ -110,7 +110,7 @@ struct VoxelizePush {
 };
 static_assert(sizeof(VoxelizePush) <= 112);
 
-// One multi-bounce gather request (VxgiBounceRequest in vxgi/voxel_column.glsl): four vec4s.
+// One multi-bounce gather request (VxgiBounceRequest in vxgi/bounce_requests.glsl): four vec4s.
 constexpr uint64_t kBounceRequestBytes = 4 * sizeof(glm::vec4);
 
 struct ResolvePush {
@@ -314,7 +314,10 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       occupancy;  // VxgiBrickOccupancy: a bit per voxel of the level being voxelized, 2 words a brick
   BufferHandle resolveArguments, brickList;            // brick_list.comp's indirect dispatch and bricks
   BufferHandle downsampleArguments, downsampleBricks;  // downsample_list.comp's
-  BufferHandle bounceRequests;                         // voxelize.frag's for bounce_gather.comp
+  BufferHandle bounceRequests;                         // voxelize.frag's (vxgi/bounce_requests.glsl)
+  BufferHandle bounceCells, bounceLeaders;             // bounce_cluster.comp's
+  // A cell per 2×2 voxel columns of a level, per projection axis and facing sign.
+  const uint64_t bounceCellCount = uint64_t(format.mapSize / 2) * (format.mapSize / 2) * 6u;
   const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
   const uint32_t bricksPerLevel = bricksPerAxis * bricksPerAxis * bricksPerAxis;
   const bool cpuDevice = frame.device && frame.device->cpu;
@@ -353,6 +356,13 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
             bounceRequests =
                 b.createBuffer(fmt::format("VXGI.BounceRequests.L{}", level), {bounceRequestBytes});
             bounceRequests = b.write(bounceRequests, Access::TransferDst);
+            bounceCells = b.write(b.createBuffer(fmt::format("VXGI.BounceCells.L{}", level),
+                                                 {bounceCellCount * sizeof(uint32_t)}),
+                                  Access::TransferDst);
+            bounceLeaders =
+                b.write(b.createBuffer(fmt::format("VXGI.BounceLeaders.L{}", level),
+                                       {sizeof(glm::uvec4) + bounceRequestCapacity * sizeof(uint32_t)}),
+                        Access::TransferDst);
           }
           occupancy = b.write(occupancy, Access::TransferDst);
           resolveArguments = b.write(resolveArguments, Access::TransferDst);
@@ -362,12 +372,15 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           b.condition(decide);
           BufferHandle occupied = occupancy, arguments = resolveArguments, list = brickList,
                        downsampleArgs = downsampleArguments, downsampleList = downsampleBricks,
-                       requests = bounceRequests;
+                       requests = bounceRequests, cells = bounceCells, leaders = bounceLeaders;
           return [=](PassContext& ctx) {
             // No bounce gathers yet, and no workgroups to trace them (voxelize.frag counts both).
             if (requests) {
               const glm::uvec4 noRequests(0u, 1u, 1u, 0u);
               vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(requests).handle(), 0, sizeof(noRequests), &noRequests);
+              vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(leaders).handle(), 0, sizeof(noRequests), &noRequests);
+              vkCmdFillBuffer(ctx.cmd(), ctx.buffer(cells).handle(), 0, VK_WHOLE_SIZE,
+                              0xFFFFFFFFu);  // no leaders
             }
             vkCmdFillBuffer(ctx.cmd(), ctx.buffer(occupied).handle(), 0, VK_WHOLE_SIZE, 0u);
             // No workgroups and no bricks listed yet (brick_list.comp counts them).
@@ -489,33 +502,102 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                       };
                     });
 
-    if (multiBounce)
+    // Multi-bounce (vxgi/bounce_requests.glsl): the listed gathers. Requests of one surface in
+    // a 2×2 cell of columns share a leader (BounceLeaders, BounceFollowers), the leaders trace
+    // (BounceGather), and every request adds its surface's reflected light to its column
+    // (BounceApply).
+    if (multiBounce) {
+      struct BouncePush {
+        glm::ivec4 scratchLayout;  // w: the level
+        glm::vec4 bounce;
+      };
+      const BouncePush push{glm::ivec4(int32_t(scratch.perRow), 4, 0, int32_t(level)), bounce};
+      BufferHandle leaderOf, irradiance, links;
+      // Step 0 lists each cell's even columns as leaders; step 1 gives every other request
+      // the nearest leader that serves it, or makes it one (bounce_cluster.comp).
+      for (int step = 0; step < 2; ++step)
+        graph.addPass(fmt::format("{}{}.L{}", prefix, step == 0 ? "BounceLeaders" : "BounceFollowers", level),
+                      Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+                        BufferHandle constants = b.read(handles.constants, Access::Uniform);
+                        BufferHandle arguments = b.read(bounceRequests, Access::Indirect);
+                        BufferHandle requests = b.read(bounceRequests, Access::StorageRead);
+                        if (step == 0) {
+                          bounceCells = b.write(bounceCells, Access::StorageReadWrite);
+                          links = b.write(b.createBuffer(fmt::format("VXGI.BounceLinks.L{}", level),
+                                                         {bounceRequestCapacity * sizeof(uint32_t)}),
+                                          Access::StorageReadWrite);
+                          leaderOf = b.write(b.createBuffer(fmt::format("VXGI.BounceLeaderOf.L{}", level),
+                                                            {bounceRequestCapacity * sizeof(uint32_t)}),
+                                             Access::StorageReadWrite);
+                        } else {
+                          b.read(bounceCells, Access::StorageRead);
+                          b.read(links, Access::StorageRead);
+                          leaderOf = b.write(leaderOf, Access::StorageReadWrite);
+                        }
+                        bounceLeaders = b.write(bounceLeaders, Access::StorageReadWrite);
+                        b.condition(decide);
+                        BufferHandle cells = bounceCells, cellLinks = links, leaders = bounceLeaders,
+                                     leaderOfRequest = leaderOf;
+                        return [=](PassContext& ctx) {
+                          gpu::Bindings bind;
+                          bind.buffer("clipMap", constants)
+                              .buffer("VxgiBounceRequests", requests)
+                              .buffer("VxgiBounceCells", cells)
+                              .buffer("VxgiBounceLinks", cellLinks)
+                              .buffer("VxgiBounceLeaders", leaders)
+                              .buffer("VxgiBounceLeaderOf", leaderOfRequest);
+                          ctx.dispatchIndirect(
+                              ctx.pipelines().compute(
+                                  shader(shaders, "bounce_cluster.comp", format, "VXGI_CLUSTER_STEP", step)),
+                              bind, arguments, push);
+                        };
+                      });
       graph.addPass(
           fmt::format("{}BounceGather.L{}", prefix, level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
+            BufferHandle constants = b.read(handles.constants, Access::Uniform);
+            BufferHandle requests = b.read(bounceRequests, Access::StorageRead);
+            BufferHandle arguments = b.read(bounceLeaders, Access::Indirect);
+            BufferHandle leaders = b.read(bounceLeaders, Access::StorageRead);
+            irradiance = b.write(b.createBuffer(fmt::format("VXGI.BounceIrradiance.L{}", level),
+                                                {bounceRequestCapacity * 2u * sizeof(glm::vec4)}),
+                                 Access::StorageReadWrite);
+            // The clip-map as it stands: the finer levels already this frame's.
+            std::vector<TextureHandle> gatherFrom;
+            for (TextureHandle t : handles.clip) gatherFrom.push_back(b.read(t, Access::Sampled));
+            b.condition(decide);
+            BufferHandle gathered = irradiance;
+            return [=](PassContext& ctx) {
+              gpu::Bindings bind;
+              bind.buffer("clipMap", constants)
+                  .buffer("VxgiBounceRequests", requests)
+                  .buffer("VxgiBounceLeaders", leaders)
+                  .buffer("VxgiBounceIrradiance", gathered);
+              for (size_t t = 0; t < gatherFrom.size(); ++t)
+                bind.texture(fmt::format("voxelsClip{}", t), gatherFrom[t], gpu::SamplerKind::LinearRepeat);
+              ctx.dispatchIndirect(ctx.pipelines().compute(shader(shaders, "bounce_gather.comp", format)),
+                                   bind, arguments, push);
+            };
+          });
+      graph.addPass(
+          fmt::format("{}BounceApply.L{}", prefix, level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
             scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
             BufferHandle constants = b.read(handles.constants, Access::Uniform);
             BufferHandle arguments = b.read(bounceRequests, Access::Indirect);
             BufferHandle requests = b.read(bounceRequests, Access::StorageRead);
             BufferHandle count = b.read(bounceRequests, Access::TransferSrc);
-            // The clip-map as it stands: the finer levels already this frame's.
-            std::vector<TextureHandle> gatherFrom;
-            for (TextureHandle t : handles.clip) gatherFrom.push_back(b.read(t, Access::Sampled));
+            BufferHandle leaderOfRequest = b.read(leaderOf, Access::StorageRead);
+            BufferHandle gathered = b.read(irradiance, Access::StorageRead);
             b.condition(decide);
             TextureHandle sums = scratchTexture;
             return [=](PassContext& ctx) {
-              const gpu::Pipeline& pipeline =
-                  ctx.pipelines().compute(shader(shaders, "bounce_gather.comp", format));
               gpu::Bindings bind;
               bind.buffer("clipMap", constants)
                   .storage("scratch", sums)
-                  .buffer("VxgiBounceRequests", requests);
-              for (size_t t = 0; t < gatherFrom.size(); ++t)
-                bind.texture(fmt::format("voxelsClip{}", t), gatherFrom[t], gpu::SamplerKind::LinearRepeat);
-              struct {
-                glm::ivec4 scratchLayout;
-                glm::vec4 bounce;
-              } push{glm::ivec4(int32_t(scratch.perRow), 4, 0, 0), bounce};
-              ctx.dispatchIndirect(pipeline, bind, arguments, push);
+                  .buffer("VxgiBounceRequests", requests)
+                  .buffer("VxgiBounceLeaderOf", leaderOfRequest)
+                  .buffer("VxgiBounceIrradiance", gathered);
+              ctx.dispatchIndirect(ctx.pipelines().compute(shader(shaders, "bounce_apply.comp", format)),
+                                   bind, arguments, push);
               // How many the fragments asked for (the header's w). A surface whose
               // gather did not fit lacks its bounce light this frame: the plugin
               // voxelizes again with room for all, and this frame says so.
@@ -537,6 +619,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                   3 * sizeof(uint32_t), sizeof(uint32_t));
             };
           });
+    }
 
     // A level resolved whole (a full re-voxelization) need only write the bricks that
     // received sums or may hold something from before: brick_list.comp lists them, and the
