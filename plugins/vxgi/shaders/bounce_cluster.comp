@@ -33,7 +33,7 @@ void main() {
   VxgiVoxelColumn column;
   VxgiSurfacePiece piece;
   vxgiUnpackBounceRequest(bounceRequests[i], world, albedo, column, piece);
-  bool even = vxgiLeadsCell(column);
+  bool even = pc.scratchLayout.z == 0 || vxgiLeadsCell(column);  // without sharing, every request leads
 #if VXGI_CLUSTER_STEP == 0
   if (!even) return;
   bounceLinks[i] = atomicExchange(bounceCells[vxgiBounceCell(column, piece.normal)], i);

@@ -511,7 +511,10 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
         glm::ivec4 scratchLayout;  // w: the level
         glm::vec4 bounce;
       };
-      const BouncePush push{glm::ivec4(int32_t(scratch.perRow), 4, 0, int32_t(level)), bounce};
+      // z: 1 when a cell's columns share a gather (r.VXGI.BounceGatherSharing), else each leads.
+      const BouncePush push{
+          glm::ivec4(int32_t(scratch.perRow), 4, settings.bounceGatherSharing.get() ? 1 : 0, int32_t(level)),
+          bounce};
       BufferHandle leaderOf, irradiance, links;
       // Step 0 lists each cell's even columns as leaders; step 1 gives every other request
       // the nearest leader that serves it, or makes it one (bounce_cluster.comp).

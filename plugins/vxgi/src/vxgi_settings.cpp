@@ -172,6 +172,13 @@ void VxgiSettings::declare(PluginContext& ctx) {
        .outOfRange = RangePolicy::Clamp,
        .ini = {"VXGI", "VxgiBounceGatherList"},
        .category = clip});
+  bounceGatherSharing = ctx.addCVar<bool>(
+      {.name = "r.VXGI.BounceGatherSharing",
+       .defaultValue = true,
+       .help = "Multi-bounce: the surfaces of a 2x2 cell of voxel columns that face the same way share one "
+               "gather (a third of the cones on the Cornell box); 0 traces every column's own.",
+       .ini = {"VXGI", "bVxgiBounceGatherSharing"},
+       .category = clip});
   emittanceAmbient = ctx.addCVar<float>(
       {.name = "r.VXGI.EmittanceAmbient",
        .defaultValue = 0.0f,

@@ -8,7 +8,7 @@
 layout(local_size_x = VXGI_BOUNCE_GROUP) in;
 
 layout(push_constant) uniform Push {
-  ivec4 scratchLayout;  // x: channels per row, y: channels per direction, w: the level
+  ivec4 scratchLayout;  // x: channels per row, y: channels per direction, z: sharing, w: the level
   vec4 bounce;          // x: cones, y: step factor, z: range (m), w: normal offset (voxels)
 } pc;
 
