@@ -137,7 +137,11 @@ void outgoingRadiance(vec3 n, bool doubleSided, vec3 albedo, vec3 emission, vec3
 
 void main() {
   unusedColor = vec4(0.0);
-  if (any(lessThan(gl_FragCoord.xy, gPixelBox.xy)) || any(greaterThan(gl_FragCoord.xy, gPixelBox.zw))) discard;
+  // The pixel in this axis's N×N region of the target (voxelize.geom). A dilated triangle
+  // reaching past its region's side lands in the next region: that is outside the level.
+  vec2 pixel = gl_FragCoord.xy - vec2(float(gAxis * clipMap.mapSize), 0.0);
+  if (pixel.x < 0.0 || pixel.x > float(clipMap.mapSize)) discard;
+  if (any(lessThan(pixel, gPixelBox.xy)) || any(greaterThan(pixel, gPixelBox.zw))) discard;
   int level = draw.regionMin.w;
   float v = vxgiVoxelSize(level);
   vec3 u = gWorld / v;
@@ -170,7 +174,7 @@ void main() {
   float dominant = max(a[gAxis], 1e-6);
   // Projected coverage of this piece along each axis, relative to one voxel face: the
   // part of the pixel it covers, seen along the dominant axis, and tilted to the others.
-  float covered = pixelCoverage(floor(gl_FragCoord.xy), gTriangle01.xy, gTriangle01.zw, gTriangle2);
+  float covered = pixelCoverage(floor(pixel), gTriangle01.xy, gTriangle01.zw, gTriangle2);
   if (!(covered > 0.0)) discard;  // the dilation's extra reach: the triangle misses this column
   vec3 coverage = covered * a / dominant;
   bool proportional = params.y > 0.5, omni = params.z > 0.5;

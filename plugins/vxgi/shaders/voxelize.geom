@@ -83,7 +83,11 @@ void main() {
     gPixelBox = vec4(lo, hi);
     gTriangle01 = vec4(p[0], p[1]);
     gTriangle2 = p[2];
-    gl_Position = vec4(q[i] / size * 2.0 - 1.0, 0.5, 1.0);
+    // Each projection axis has its own N×N region of the 3N×N target, side by side along X: a
+    // CPU device (lavapipe) rasterizes each 64×64 tile of a target on one thread, so a
+    // single N×N target of 64² ran all of a level's fragments on one core.
+    gl_Position = vec4((q[i].x + float(axis) * size) / (3.0 * size) * 2.0 - 1.0, q[i].y / size * 2.0 - 1.0, 0.5,
+                       1.0);
     EmitVertex();
   }
   EndPrimitive();

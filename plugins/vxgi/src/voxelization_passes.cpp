@@ -405,7 +405,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
           occupancy = b.write(occupancy, Access::StorageReadWrite);
           TextureDesc targetDesc;
           targetDesc.format = VK_FORMAT_R8_UNORM;
-          targetDesc.width = targetDesc.height = format.mapSize;
+          // A region per projection axis, side by side (voxelize.geom).
+          targetDesc.width = 3 * format.mapSize;
+          targetDesc.height = format.mapSize;
           TextureHandle target =
               b.write(b.createTexture(fmt::format("VXGI.VoxelizationTarget.L{}", level), targetDesc),
                       Access::ColorAttachment);
