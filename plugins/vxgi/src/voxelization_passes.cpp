@@ -1,5 +1,7 @@
 #include "vxgi_passes.h"
 
+#include "bounce_gather_passes.h"
+
 #include <bounce/frame/settling.h>
 #include <bounce/gpu/barriers.h>
 #include <bounce/gpu/device_capabilities.h>
@@ -9,7 +11,6 @@
 #include <fmt/format.h>
 
 #include <array>
-#include <cstring>
 #include <memory>
 #include <optional>
 
@@ -504,126 +505,25 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
                       };
                     });
 
-    // Multi-bounce (vxgi/bounce_requests.glsl): the listed gathers. Requests of one surface in
-    // a 2×2 cell of columns share a leader (BounceLeaders, BounceFollowers), the leaders trace
-    // (BounceGather), and every request adds its surface's reflected light to its column
-    // (BounceApply).
     if (multiBounce) {
-      struct BouncePush {
-        glm::ivec4 scratchLayout;  // w: the level
-        glm::vec4 bounce;
-      };
-      // z: 1 when a cell's columns share a gather (r.VXGI.BounceGatherSharing), else each leads.
-      const BouncePush push{
-          glm::ivec4(int32_t(scratch.perRow), 4, settings.bounceGatherSharing.get() ? 1 : 0, int32_t(level)),
-          bounce};
-      BufferHandle leaderOf, irradiance, links;
-      // Step 0 lists each cell's even columns as leaders; step 1 gives every other request
-      // the nearest leader that serves it, or makes it one (bounce_cluster.comp).
-      for (int step = 0; step < 2; ++step)
-        graph.addPass(fmt::format("{}{}.L{}", prefix, step == 0 ? "BounceLeaders" : "BounceFollowers", level),
-                      Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-                        BufferHandle constants = b.read(handles.constants, Access::Uniform);
-                        BufferHandle arguments = b.read(bounceRequests, Access::Indirect);
-                        BufferHandle requests = b.read(bounceRequests, Access::StorageRead);
-                        if (step == 0) {
-                          bounceCells = b.write(bounceCells, Access::StorageReadWrite);
-                          links = b.write(b.createBuffer(fmt::format("VXGI.BounceLinks.L{}", level),
-                                                         {bounceRequestCapacity * sizeof(uint32_t)}),
-                                          Access::StorageReadWrite);
-                          leaderOf = b.write(b.createBuffer(fmt::format("VXGI.BounceLeaderOf.L{}", level),
-                                                            {bounceRequestCapacity * sizeof(uint32_t)}),
-                                             Access::StorageReadWrite);
-                        } else {
-                          b.read(bounceCells, Access::StorageRead);
-                          b.read(links, Access::StorageRead);
-                          leaderOf = b.write(leaderOf, Access::StorageReadWrite);
-                        }
-                        bounceLeaders = b.write(bounceLeaders, Access::StorageReadWrite);
-                        b.condition(decide);
-                        BufferHandle cells = bounceCells, cellLinks = links, leaders = bounceLeaders,
-                                     leaderOfRequest = leaderOf;
-                        return [=](PassContext& ctx) {
-                          gpu::Bindings bind;
-                          bind.buffer("clipMap", constants)
-                              .buffer("VxgiBounceRequests", requests)
-                              .buffer("VxgiBounceCells", cells)
-                              .buffer("VxgiBounceLinks", cellLinks)
-                              .buffer("VxgiBounceLeaders", leaders)
-                              .buffer("VxgiBounceLeaderOf", leaderOfRequest);
-                          ctx.dispatchIndirect(
-                              ctx.pipelines().compute(
-                                  shader(shaders, "bounce_cluster.comp", format, "VXGI_CLUSTER_STEP", step)),
-                              bind, arguments, push);
-                        };
-                      });
-      graph.addPass(
-          fmt::format("{}BounceGather.L{}", prefix, level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-            BufferHandle constants = b.read(handles.constants, Access::Uniform);
-            BufferHandle requests = b.read(bounceRequests, Access::StorageRead);
-            BufferHandle arguments = b.read(bounceLeaders, Access::Indirect);
-            BufferHandle leaders = b.read(bounceLeaders, Access::StorageRead);
-            irradiance = b.write(b.createBuffer(fmt::format("VXGI.BounceIrradiance.L{}", level),
-                                                {bounceRequestCapacity * 2u * sizeof(glm::vec4)}),
-                                 Access::StorageReadWrite);
-            // The clip-map as it stands: the finer levels already this frame's.
-            std::vector<TextureHandle> gatherFrom;
-            for (TextureHandle t : handles.clip) gatherFrom.push_back(b.read(t, Access::Sampled));
-            b.condition(decide);
-            BufferHandle gathered = irradiance;
-            return [=](PassContext& ctx) {
-              gpu::Bindings bind;
-              bind.buffer("clipMap", constants)
-                  .buffer("VxgiBounceRequests", requests)
-                  .buffer("VxgiBounceLeaders", leaders)
-                  .buffer("VxgiBounceIrradiance", gathered);
-              for (size_t t = 0; t < gatherFrom.size(); ++t)
-                bind.texture(fmt::format("voxelsClip{}", t), gatherFrom[t], gpu::SamplerKind::LinearRepeat);
-              ctx.dispatchIndirect(ctx.pipelines().compute(shader(shaders, "bounce_gather.comp", format)),
-                                   bind, arguments, push);
-            };
-          });
-      graph.addPass(
-          fmt::format("{}BounceApply.L{}", prefix, level), Queue::Compute, [&](PassBuilder& b) -> RecordFn {
-            scratchTexture = b.write(scratchTexture, Access::StorageReadWrite);
-            BufferHandle constants = b.read(handles.constants, Access::Uniform);
-            BufferHandle arguments = b.read(bounceRequests, Access::Indirect);
-            BufferHandle requests = b.read(bounceRequests, Access::StorageRead);
-            BufferHandle count = b.read(bounceRequests, Access::TransferSrc);
-            BufferHandle leaderOfRequest = b.read(leaderOf, Access::StorageRead);
-            BufferHandle gathered = b.read(irradiance, Access::StorageRead);
-            b.condition(decide);
-            TextureHandle sums = scratchTexture;
-            return [=](PassContext& ctx) {
-              gpu::Bindings bind;
-              bind.buffer("clipMap", constants)
-                  .storage("scratch", sums)
-                  .buffer("VxgiBounceRequests", requests)
-                  .buffer("VxgiBounceLeaderOf", leaderOfRequest)
-                  .buffer("VxgiBounceIrradiance", gathered);
-              ctx.dispatchIndirect(ctx.pipelines().compute(shader(shaders, "bounce_apply.comp", format)),
-                                   bind, arguments, push);
-              // How many the fragments asked for (the header's w). A surface whose
-              // gather did not fit lacks its bounce light this frame: the plugin
-              // voxelizes again with room for all, and this frame says so.
-              ctx.readback(
-                  count,
-                  [record, lateNotes, level,
-                   capacity = bounceRequestCapacity](std::span<const std::byte> bytes) {
-                    uint32_t made = 0;
-                    if (bytes.size() < sizeof(made)) return;
-                    std::memcpy(&made, bytes.data(), sizeof(made));
-                    if (made <= capacity) return;
-                    record->bounceRequestsWanted = std::max<uint64_t>(record->bounceRequestsWanted, made);
-                    if (capacity < kMostBounceRequests)
-                      lateNotes->notes.push_back(
-                          fmt::format("VXGI: level {} asked for {} multi-bounce gathers, its list holds {}; "
-                                      "voxelizing again with room for them",
-                                      level, made, capacity));
-                  },
-                  3 * sizeof(uint32_t), sizeof(uint32_t));
-            };
-          });
+      BounceGatherLevel in;
+      in.prefix = prefix;
+      in.level = level;
+      in.shaders = shaders;
+      in.format = format;
+      in.constants = handles.constants;
+      in.clip = handles.clip;
+      in.requests = bounceRequests;
+      in.cells = bounceCells;
+      in.leaders = bounceLeaders;
+      in.capacity = bounceRequestCapacity;
+      in.scratchPerRow = scratch.perRow;
+      in.sharing = settings.bounceGatherSharing.get();
+      in.bounce = bounce;
+      in.decide = decide;
+      in.record = record;
+      in.lateNotes = lateNotes;
+      addBounceGatherPasses(graph, in, scratchTexture);
     }
 
     // A level resolved whole (a full re-voxelization) need only write the bricks that
