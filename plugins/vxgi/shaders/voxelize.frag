@@ -99,7 +99,6 @@ float pixelCoverage(vec2 pixel, vec2 p0, vec2 p1, vec2 p2) {
   return clamp(abs(area), 0.0, 1.0);
 }
 
-
 bool inBox(ivec3 c, ivec4 lo, ivec4 hi) { return all(greaterThanEqual(c, lo.xyz)) && all(lessThan(c, hi.xyz)); }
 
 // Diffuse radiance the two sides of a surface with normal n send out (`back` only when
@@ -222,8 +221,8 @@ void main() {
   // diffuse cones from the clip-map as the last voxelization left it (which held the
   // bounces before, so each voxelization adds one; the plugin re-voxelizes until
   // r.VXGI.Bounces are in). The bounce passes (vxgi/bounce_requests.glsl) trace the cones and
-  // add the light to this column's sums after the draw: a CPU device runs a fragment shader on the threads of the
-  // target's tiles, and a 64² voxelization target is one tile, one core. Traced here, the
+  // add the light to this column's sums after the draw: a CPU device runs a fragment shader
+  // on the threads of the target's 64×64 tiles, as many as the target has. Traced here, the
   // cones cost 56 ns a texture sample; there 13 (lavapipe, 2 cores; VXGI README). A request
   // that does not fit in the list is dropped and counted: the plugin voxelizes again with a
   // longer one (tracing it here instead costs every fragment the untaken branch, since a
