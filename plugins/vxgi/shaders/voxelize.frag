@@ -223,7 +223,7 @@ void main() {
   // r.VXGI.Bounces are in). The bounce passes (vxgi/bounce_requests.glsl) trace the cones and
   // add the light to this column's sums after the draw: a CPU device runs a fragment shader
   // on the threads of the target's 64×64 tiles, as many as the target has. Traced here, the
-  // cones cost 56 ns a texture sample; there 13 (lavapipe, 2 cores; VXGI README). A request
+  // cones cost 56 ns a texture sample; there 12 (lavapipe, 2 cores; VXGI README). A request
   // that does not fit in the list is dropped and counted: the plugin voxelizes again with a
   // longer one (tracing it here instead costs every fragment the untaken branch, since a
   // CPU device runs both sides of a branch under a mask: 11 → 28 ms a voxelization).

@@ -42,8 +42,9 @@ void addBounceGatherPasses(RenderGraph& graph, const BounceGatherLevel& in, Text
                         in.bounce};
   BufferHandle leaderOf, irradiance, links;
   // Step 0 lists each cell's even columns as leaders; step 1 gives every other request
-  // the nearest leader that serves it, or makes it one (bounce_cluster.comp).
-  for (int step = 0; step < 2; ++step)
+  // the nearest leader that serves it, or makes it one (bounce_cluster.comp). Without
+  // sharing step 0 makes every request lead, and there is no step 1.
+  for (int step = 0; step < (in.sharing ? 2 : 1); ++step)
     graph.addPass(fmt::format("{}{}.L{}", prefix, step == 0 ? "BounceLeaders" : "BounceFollowers", level),
                   Queue::Compute, [&](PassBuilder& b) -> RecordFn {
                     BufferHandle constants = b.read(in.constants, Access::Uniform);

@@ -256,12 +256,9 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   const bool multiBounce = plan.bounceCones > 0 && !format.ambientOcclusionMode;
   const glm::vec4 bounce(float(multiBounce ? plan.bounceCones : 0u), settings.tracingStep.get(),
                          settings.maxDistance.get(), settings.normalOffset.get());
-  // The gathers a level's fragments hand to bounce_gather.comp (voxelize.frag), as many as
-  // the plugin's record says; the count is read back after the frame.
-  const uint64_t bounceRequestCapacity =
-      record->bounceRequestCapacity > 0
-          ? record->bounceRequestCapacity
-          : initialBounceRequestCapacity(format.mapSize, settings.bounceGatherList.get());
+  // The gathers a level's fragments list (voxelize.frag): as many as the plugin sized the
+  // lists for (VxgiPlugin::voxelization); the count is read back after the frame.
+  const uint64_t bounceRequestCapacity = record->bounceRequestCapacity;
   const uint64_t bounceRequestBytes = sizeof(glm::uvec4) + bounceRequestCapacity * kBounceRequestBytes;
   std::shared_ptr<SettlingNotes> lateNotes = multiBounce ? lateSettlingNotes(graph) : nullptr;
 
