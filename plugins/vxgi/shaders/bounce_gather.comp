@@ -23,7 +23,7 @@ void main() {
   VxgiSurfacePiece piece;
   vxgiUnpackBounceRequest(bounceRequests[i], world, albedo, column, piece);
   int cones = int(pc.bounce.x);
-  float turn = vxgiColumnTurn(column);
+  float turn = vxgiColumnTurn(column, pc.scratchLayout.z);
   vec3 n = piece.normal;
   ConeTracingArguments args = vxgiSurfaceCone(world, n, pc.bounce.w, pc.bounce.y, pc.bounce.z);
   vec3 front = vxgiGatherDiffuse(args, n, cones, turn).irradiance;

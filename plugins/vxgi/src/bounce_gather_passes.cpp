@@ -37,14 +37,15 @@ void addBounceGatherPasses(RenderGraph& graph, const BounceGatherLevel& in, Text
     glm::ivec4 scratchLayout;  // w: the level
     glm::vec4 bounce;
   };
-  // z: 1 when a cell's columns share a gather (r.VXGI.BounceGatherSharing), else each leads.
-  const BouncePush push{glm::ivec4(int32_t(in.scratchPerRow), 4, in.sharing ? 1 : 0, int32_t(in.level)),
+  // z: the edge of the cells whose columns share a gather (r.VXGI.BounceGatherCell; 1: each leads).
+  const bool sharing = in.cellEdge > 1;
+  const BouncePush push{glm::ivec4(int32_t(in.scratchPerRow), 4, int32_t(in.cellEdge), int32_t(in.level)),
                         in.bounce};
   BufferHandle leaderOf, irradiance, links;
-  // Step 0 lists each cell's even columns as leaders; step 1 gives every other request
-  // the nearest leader that serves it, or makes it one (bounce_cluster.comp). Without
-  // sharing step 0 makes every request lead, and there is no step 1.
-  for (int step = 0; step < (in.sharing ? 2 : 1); ++step)
+  // Step 0 lists each cell's leading column's requests as leaders; step 1 gives every other
+  // request the nearest leader that serves it, or makes it one (bounce_cluster.comp).
+  // Without sharing step 0 makes every request lead, and there is no step 1.
+  for (int step = 0; step < (sharing ? 2 : 1); ++step)
     graph.addPass(fmt::format("{}{}.L{}", prefix, step == 0 ? "BounceLeaders" : "BounceFollowers", level),
                   Queue::Compute, [&](PassBuilder& b) -> RecordFn {
                     BufferHandle constants = b.read(in.constants, Access::Uniform);

@@ -1,6 +1,6 @@
 #pragma once
 // Multi-bounce, per level (vxgi/bounce_requests.glsl): after the voxelizer has listed each
-// fragment's gather, requests of one surface in a 2×2 cell of voxel columns share a leader
+// fragment's gather, requests of one surface in a cell of N×N voxel columns share a leader
 // (VXGI.BounceLeaders, VXGI.BounceFollowers), the leaders trace their cones
 // (VXGI.BounceGather), and every request adds its surface's reflected light to its column's
 // sums (VXGI.BounceApply), before the level's resolve.
@@ -32,7 +32,7 @@ struct BounceGatherLevel {
   BufferHandle leaders;                        ///< the list to trace, its header zeroed
   uint64_t capacity = 0;                       ///< requests the lists hold
   uint32_t scratchPerRow = 0;                  ///< the scratch volume's channels per row
-  bool sharing = true;                         ///< r.VXGI.BounceGatherSharing
+  uint32_t cellEdge = 4;                       ///< r.VXGI.BounceGatherCell (1: no sharing)
   glm::vec4 bounce{0.0f};                      ///< cones, step factor, range (m), normal offset (voxels)
   std::function<PassDecision()> decide;        ///< whether the level voxelizes this frame
   std::shared_ptr<VoxelizationRecord> record;  ///< gets how many requests overflowed

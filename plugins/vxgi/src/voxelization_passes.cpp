@@ -314,8 +314,11 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   BufferHandle downsampleArguments, downsampleBricks;  // downsample_list.comp's
   BufferHandle bounceRequests;                         // voxelize.frag's (vxgi/bounce_requests.glsl)
   BufferHandle bounceCells, bounceLeaders;             // bounce_cluster.comp's
-  // A cell per 2×2 voxel columns of a level, per projection axis and facing sign.
-  const uint64_t bounceCellCount = uint64_t(format.mapSize / 2) * (format.mapSize / 2) * 6u;
+  // A leader list head per cell of r.VXGI.BounceGatherCell² columns, per axis and facing sign
+  // (vxgiBounceCell); without sharing no list is used.
+  const uint32_t bounceCell = uint32_t(settings.bounceGatherCell.get());
+  const uint64_t bounceCellCount =
+      bounceCell > 1 ? uint64_t(format.mapSize / bounceCell) * (format.mapSize / bounceCell) * 6u : 1u;
   const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
   const uint32_t bricksPerLevel = bricksPerAxis * bricksPerAxis * bricksPerAxis;
   const bool cpuDevice = frame.device && frame.device->cpu;
@@ -515,7 +518,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       in.leaders = bounceLeaders;
       in.capacity = bounceRequestCapacity;
       in.scratchPerRow = scratch.perRow;
-      in.sharing = settings.bounceGatherSharing.get();
+      in.cellEdge = bounceCell;
       in.bounce = bounce;
       in.decide = decide;
       in.record = record;

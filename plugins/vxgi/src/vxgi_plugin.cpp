@@ -103,7 +103,7 @@ class VxgiPlugin final : public Plugin {
     if (settings_.bounces.get() > 1 && !settings_.ambientOcclusionMode.get()) {
       mix(settings_.bounces.get());
       mix(settings_.bounceCones.get());
-      mix(settings_.bounceGatherSharing.get());
+      mix(settings_.bounceGatherCell.get());
       mix(settings_.tracingStep.get());
       mix(settings_.maxDistance.get());
       mix(settings_.normalOffset.get());

@@ -172,12 +172,14 @@ void VxgiSettings::declare(PluginContext& ctx) {
        .outOfRange = RangePolicy::Clamp,
        .ini = {"VXGI", "VxgiBounceGatherList"},
        .category = clip});
-  bounceGatherSharing = ctx.addCVar<bool>(
-      {.name = "r.VXGI.BounceGatherSharing",
-       .defaultValue = true,
-       .help = "Multi-bounce: the surfaces of a 2x2 cell of voxel columns that face the same way share one "
-               "gather (a third of the cones on the Cornell box); 0 traces every column's own.",
-       .ini = {"VXGI", "bVxgiBounceGatherSharing"},
+  bounceGatherCell = ctx.addCVar<int32_t>(
+      {.name = "r.VXGI.BounceGatherCell",
+       .defaultValue = 4,
+       .help = "Multi-bounce: the surfaces of an NxN cell of voxel columns that face the same way (within "
+               "15 degrees) share one gather (1, 2, 4 or 8; 1 traces every column's own). 4 traces a fifth "
+               "of the Cornell box's gathers, 2 a third.",
+       .allowed = {1, 2, 4, 8},
+       .ini = {"VXGI", "VxgiBounceGatherCell"},
        .category = clip});
   emittanceAmbient = ctx.addCVar<float>(
       {.name = "r.VXGI.EmittanceAmbient",

@@ -38,7 +38,7 @@ struct VxgiSettings {
   CVarRef<int32_t> bounces;              ///< r.VXGI.Bounces: 1 the seed's one bounce; more re-voxelize
   CVarRef<int32_t> bounceCones;          ///< r.VXGI.BounceCones: the voxelizer's gather per surface
   CVarRef<int32_t> bounceGatherList;  ///< r.VXGI.BounceGatherList: a level's gathers at first (0: automatic)
-  CVarRef<bool> bounceGatherSharing;  ///< r.VXGI.BounceGatherSharing: a 2×2 cell of columns shares a gather
+  CVarRef<int32_t> bounceGatherCell;  ///< r.VXGI.BounceGatherCell: an N×N cell of columns shares a gather
   // Tracing (post-process-volume settings where users tune them per area).
   CVarRef<bool> diffuseEnable, specularEnable;
   CVarRef<int32_t> diffuseCones, diffuseSparsity;
