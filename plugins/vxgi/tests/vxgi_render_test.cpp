@@ -27,10 +27,11 @@ TEST_F(VxgiRender, WhiteFurnaceReadsEmissionTimesOnePlusAlbedo) {
   RenderedFrame f = render(32, 32, {"radiance", "indirect-irradiance"});
   const Stats r = stats(f.images.at("radiance"), 1), e = stats(f.images.at("indirect-irradiance"), 1);
   ASSERT_TRUE(r.finite && e.finite);
-  // Every pixel within 1% (the issue aims at 2%; measured 1.491..1.497).
+  // Every pixel within 1% (the issue aims at 2%; measured 1.491..1.497, and 1.489..1.495
+  // since an opaque voxel is α = 0.999, clip_map.glsl).
   EXPECT_NEAR(r.min, 1.5, 0.015) << fmt::format("radiance {}..{} mean {}", r.min, r.max, r.mean);
   EXPECT_NEAR(r.max, 1.5, 0.015) << fmt::format("radiance {}..{} mean {}", r.min, r.max, r.mean);
-  // Irradiance on its own, within 1% on average (measured 0.9968 π): what is missing
+  // Irradiance on its own, within 1% on average (measured 0.9968 π, now 0.9977 π): what is missing
   // is cones whose footprint outgrows the room before they are fully opaque.
   EXPECT_NEAR(e.mean, M_PI, M_PI * 0.01);
 }
@@ -222,11 +223,14 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
   // vxgiSampleAhead) it measured 1.090, walls 0.877–1.191, ceiling 1.047 (at 128³: 0.997).
   // The coarser level could still reach up to 1.5 of its voxels behind the apex; since its
   // fetch moves until it cannot (clip_map.glsl, vxgiCoarsePosition: what stopped sunlit
-  // walls leaking through to the room) it measures 1.201, left / right / back wall
+  // walls leaking through to the room) it measured 1.201, left / right / back wall
   // 1.104 / 1.385 / 0.955, ceiling 1.008: the rest of the cancellation above is gone, and
-  // the left/right difference is the 8 cones' pattern (the spiral turns one way).
+  // the left/right difference is the 8 cones' pattern (the spiral turns one way). With an
+  // opaque voxel α = 0.999 rather than 0.9999 (clip_map.glsl, VXGI_MAX_OPTICAL_DEPTH: a
+  // footprint partly covered reads less opaque) it measures 1.183, 1.072 / 1.355 / 0.979,
+  // ceiling 0.986.
   // Bounds: the measured values ± 0.06 (the reference's noise, < 3%, plus as much again):
-  // the image within [1.14, 1.26], each wall and the ceiling within [0.89, 1.45].
+  // the image within [1.12, 1.24], each wall and the ceiling within [0.89, 1.42].
   // Every pixel traced: this measures the cones; sparse tracing has its own test below.
   start("content/cornell_box.gltf", with(kSmall, {"r.VXGI.MapSize=64", "r.VXGI.DiffuseSparsity=1"}), "VXGI");
   RenderedFrame vxgi = render(32, 32, {"indirect-irradiance"});
@@ -253,8 +257,8 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
         meanRgb(a, r.x0, r.y0, r.x1, r.y1) / std::max(meanRgb(b, r.x0, r.y0, r.x1, r.y1), 1e-9);
     std::printf("%s: VXGI / one-bounce reference = %.3f\n", r.name, ratio);
     const bool whole = std::string(r.name) == "image";
-    EXPECT_GT(ratio, whole ? 1.14 : 0.89) << r.name;
-    EXPECT_LT(ratio, whole ? 1.26 : 1.45) << r.name;
+    EXPECT_GT(ratio, whole ? 1.12 : 0.89) << r.name;
+    EXPECT_LT(ratio, whole ? 1.24 : 1.42) << r.name;
   }
 }
 

@@ -54,8 +54,10 @@ ConeTracingArguments DefaultConeTracingArguments() {
   return a;
 }
 
-// Opacity where the cone stops early: what remains would change the result by < 0.5%.
-const float VXGI_OPAQUE = 0.995;
+// Opacity where the cone stops early: what remains would change the result by < 1%. One
+// opaque surface is α = 0.999 (clip_map.glsl, VXGI_MAX_OPTICAL_DEPTH), so a cone ends on
+// the first wall it crosses rather than reading what lies past it.
+const float VXGI_OPAQUE = 0.99;
 // Bounds the loop on any input (a NaN distance, a zero cone factor): 512 samples reach
 // 2^9 footprints even with step factor 0.1, past the coarsest mip of any clip-map.
 const int VXGI_MAX_STEPS = 512;
@@ -140,9 +142,9 @@ ConeTracingResults TraceCone(ConeTracingArguments args) {
     opacity += (1.0 - opacity) * alpha;
     t += step;
   }
-  // Stopped on an opaque surface: the last < 0.5% is more of the same surface, so
+  // Stopped on an opaque surface: the last < 1% is more of the same surface, so
   // renormalise instead of leaving the cone that much too dark (this is what makes a
-  // closed furnace come out exact rather than 0.5% low).
+  // closed furnace come out exact rather than 1% low).
   if (opacity >= VXGI_OPAQUE) radiance /= opacity;
   res.irradiance = PI * radiance;
   res.ambient = 1.0 - ambientOpacity;
