@@ -316,9 +316,10 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
   BufferHandle bounceCells, bounceLeaders;             // bounce_cluster.comp's
   // A leader list head per cell of r.VXGI.BounceGatherCell² columns, per axis and facing sign
   // (vxgiBounceCell); without sharing no list is used.
-  const uint32_t bounceCell = uint32_t(settings.bounceGatherCell.get());
+  const uint32_t bounceCellEdge = uint32_t(settings.bounceGatherCell.get());
   const uint64_t bounceCellCount =
-      bounceCell > 1 ? uint64_t(format.mapSize / bounceCell) * (format.mapSize / bounceCell) * 6u : 1u;
+      bounceCellEdge > 1 ? uint64_t(format.mapSize / bounceCellEdge) * (format.mapSize / bounceCellEdge) * 6u
+                         : 1u;
   const uint32_t bricksPerAxis = format.mapSize / kBrickVoxels;
   const uint32_t bricksPerLevel = bricksPerAxis * bricksPerAxis * bricksPerAxis;
   const bool cpuDevice = frame.device && frame.device->cpu;
@@ -518,7 +519,7 @@ void addVoxelizationPasses(RenderGraph& graph, const FrameContext& frame, const 
       in.leaders = bounceLeaders;
       in.capacity = bounceRequestCapacity;
       in.scratchPerRow = scratch.perRow;
-      in.cellEdge = bounceCell;
+      in.cellEdge = bounceCellEdge;
       in.bounce = bounce;
       in.decide = decide;
       in.record = record;
