@@ -139,7 +139,7 @@ TEST_F(VxgiHardCases, ThinWallBetweenLitAndDarkRoomLeaksLessThanTwoPercent) {
   // Two 2 m rooms share a 2 cm wall, a tenth of a 27 cm voxel; only the left room has a
   // light. Compare the indirect irradiance on the dark room's floor with the lit room's
   // (its mirror image). Physically the leak is 0. In VXGI the wall's voxel is opaque for
-  // light crossing it (coverage 1, α = 0.9999 at level 0) and directional storage keeps
+  // light crossing it (coverage 1, α = 0.99 at level 0) and directional storage keeps
   // its lit face out of what the dark side sees; what can leak is coarser footprints
   // that average both rooms. The bound: 2% of the lit room's indirect light.
   for (const char* map : {"r.VXGI.MapSize=32", "r.VXGI.MapSize=64"}) {

@@ -27,13 +27,39 @@ TEST_F(VxgiRender, WhiteFurnaceReadsEmissionTimesOnePlusAlbedo) {
   RenderedFrame f = render(32, 32, {"radiance", "indirect-irradiance"});
   const Stats r = stats(f.images.at("radiance"), 1), e = stats(f.images.at("indirect-irradiance"), 1);
   ASSERT_TRUE(r.finite && e.finite);
-  // Every pixel within 1% (the issue aims at 2%; measured 1.491..1.497, and 1.489..1.495
-  // since an opaque voxel is α = 0.999, clip_map.glsl).
+  // Every pixel within 1% (the issue aims at 2%; measured 1.491..1.497 with an opaque voxel
+  // α = 0.9999, 1.489..1.495 with 0.999, and 1.495 everywhere with 0.99 and cones that stop
+  // at 0.8 opacity; clip_map.glsl, trace_cone.glsl).
   EXPECT_NEAR(r.min, 1.5, 0.015) << fmt::format("radiance {}..{} mean {}", r.min, r.max, r.mean);
   EXPECT_NEAR(r.max, 1.5, 0.015) << fmt::format("radiance {}..{} mean {}", r.min, r.max, r.mean);
-  // Irradiance on its own, within 1% on average (measured 0.9968 π, now 0.9977 π): what is missing
+  // Irradiance on its own, within 1% on average (measured 0.9968 π, 0.9977 π, now 0.9995 π): what is missing
   // is cones whose footprint outgrows the room before they are fully opaque.
   EXPECT_NEAR(e.mean, M_PI, M_PI * 0.01);
+}
+
+TEST_F(VxgiRender, AmbientOcclusionModeClosesAClosedRoomAndOpensWithinItsRange) {
+  // Ambient-occlusion mode: the lighting scales an ambient irradiance E_a = π by the
+  // fraction of unoccluded cones, so the furnace's walls (Le = 1, ρ = 0.5) read 1 + 0.5·ao.
+  // A cone stops once it is VXGI_OPAQUE (0.8) occluded (trace_cone.glsl); the surface it
+  // stopped on occludes the whole cone, so a closed room within the range reads ao = 0, not
+  // what a stopped cone has left unoccluded (up to 0.2; without this, radiance read 1.016..1.058).
+  const std::vector<std::string> ao = {"r.VXGI.MapSize=64", "r.VXGI.AmbientOcclusionMode=1",
+                                       "r.Lighting.AmbientIrradiance=3.14159265"};
+  for (const char* range : {"r.VXGI.AmbientRange=100", "r.VXGI.AmbientRange=0.001"}) {
+    std::vector<std::string> settings = ao;
+    settings.emplace_back(range);
+    start("content/tests/white_furnace.gltf", with(kSmall, settings), "VXGI");
+    RenderedFrame f = render(32, 32, {"radiance"});
+    const Stats r = stats(f.images.at("radiance"), 1);
+    ASSERT_TRUE(r.finite) << range;
+    std::printf("%s: radiance %.4f..%.4f\n", range, r.min, r.max);
+    // 100 m: every cone meets a wall (ao 0, radiance 1); 1 mm: no cone reaches one before
+    // the range ends (ao 1, radiance 1.5). 1%: the furnace's own bound.
+    const double expected = std::string(range).ends_with("=100") ? 1.0 : 1.5;
+    EXPECT_NEAR(r.min, expected, 0.01 * expected) << range;
+    EXPECT_NEAR(r.max, expected, 0.01 * expected) << range;
+    finish();
+  }
 }
 
 TEST_F(VxgiRender, GlossyFloorReflectsTheFurnaceAndOnlyItTraces) {
@@ -227,10 +253,11 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
   // 1.104 / 1.385 / 0.955, ceiling 1.008: the rest of the cancellation above is gone, and
   // the left/right difference is the 8 cones' pattern (the spiral turns one way). With an
   // opaque voxel α = 0.999 rather than 0.9999 (clip_map.glsl, VXGI_MAX_OPTICAL_DEPTH: a
-  // footprint partly covered reads less opaque) it measures 1.183, 1.072 / 1.355 / 0.979,
-  // ceiling 0.986.
+  // footprint partly covered reads less opaque) it measured 1.183, 1.072 / 1.355 / 0.979,
+  // ceiling 0.986; with α = 0.99 and cones that stop at 0.8 opacity (trace_cone.glsl,
+  // VXGI_OPAQUE) it measures 1.176, 1.045 / 1.318 / 1.035, ceiling 0.980.
   // Bounds: the measured values ± 0.06 (the reference's noise, < 3%, plus as much again):
-  // the image within [1.12, 1.24], each wall and the ceiling within [0.89, 1.42].
+  // the image within [1.12, 1.24], each wall and the ceiling within [0.92, 1.38].
   // Every pixel traced: this measures the cones; sparse tracing has its own test below.
   start("content/cornell_box.gltf", with(kSmall, {"r.VXGI.MapSize=64", "r.VXGI.DiffuseSparsity=1"}), "VXGI");
   RenderedFrame vxgi = render(32, 32, {"indirect-irradiance"});
@@ -257,8 +284,8 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
         meanRgb(a, r.x0, r.y0, r.x1, r.y1) / std::max(meanRgb(b, r.x0, r.y0, r.x1, r.y1), 1e-9);
     std::printf("%s: VXGI / one-bounce reference = %.3f\n", r.name, ratio);
     const bool whole = std::string(r.name) == "image";
-    EXPECT_GT(ratio, whole ? 1.12 : 0.89) << r.name;
-    EXPECT_LT(ratio, whole ? 1.24 : 1.42) << r.name;
+    EXPECT_GT(ratio, whole ? 1.12 : 0.92) << r.name;
+    EXPECT_LT(ratio, whole ? 1.24 : 1.38) << r.name;
   }
 }
 

@@ -22,20 +22,19 @@
 // stops a cone (half its density: α = 0.97 a sample).
 // That largest τ is a trade. Averaged density turns a footprint partly covered by an
 // opaque voxel into more opacity than its coverage: 10% of a voxel of α = 0.9999 (τ =
-// 9.21, what this was) reads as α = 0.60, so a cone ends on the nearest surface it grazes
-// and reports that surface's light for its whole cross-section (the Cornell box's one
-// bounce 1.20× the path tracer's). α = 0.999 (τ = 6.91) reads 0.50 there. Against the path
-// tracer's every bounce, at 128² and the defaults, the Cornell box's indirect irradiance
-// went from relative RMSE 0.388 (mean 1.056) to 0.365 (1.038), and eight generated sunlit
-// rooms each by −0.006 to −0.035. α = 0.99 (τ = 4.61) doubled those gains, but then the
-// white furnace read 1.3% low with one bounce and 3.2% with eight: cones that should end on
-// the room's walls lose light (not by stepping over a wall: shorter steps lost more, 1.0%,
-// 1.7% and 2.2% at step factors 0.5, 0.25 and 0.125, one bounce). One RGBA8 step is
-// 2.7% opacity at the transparent end; 25% and 6.25% (the seed's downsampled cube) store
-// as 25.8% and 5.3%.
-const float VXGI_MAX_OPTICAL_DEPTH = 6.9078;
+// 9.21, stop 39) reads as α = 0.60, so a cone ends on the nearest surface it grazes and
+// reports that surface's light for its whole cross-section (the Cornell box's one bounce
+// 1.20× the path tracer's); α = 0.99 (τ = 4.61) reads 0.37 there. A lower τ also lets a
+// cone cross a whole wall with less than its stopping opacity (trace_cone.glsl,
+// VXGI_OPAQUE, which is set with this in mind): one voxel of α = 0.99 is at most 0.99, and
+// filtered over two texels less. Against the path tracer's every bounce, at 128² and the
+// defaults (vxgi README, stop 41): relative RMSE of the Cornell box's indirect irradiance
+// 0.388 at α = 0.9999, 0.365 at 0.999, 0.358 at 0.99; eight generated sunlit rooms
+// 0.358–0.519, 0.352–0.488, 0.345–0.457. One RGBA8 step is 1.8% opacity at the
+// transparent end; 25% and 6.25% (the seed's downsampled cube) store as 25.1% and 7.0%.
+const float VXGI_MAX_OPTICAL_DEPTH = 4.6052;  // −ln(1 − 0.99)
 float vxgiDensityFromOpacity(float alpha) {
-  return -log(1.0 - clamp(alpha, 0.0, 0.999)) / VXGI_MAX_OPTICAL_DEPTH;
+  return -log(1.0 - clamp(alpha, 0.0, 0.99)) / VXGI_MAX_OPTICAL_DEPTH;
 }
 float vxgiOpacityFromDensity(float density) { return 1.0 - exp(-max(density, 0.0) * VXGI_MAX_OPTICAL_DEPTH); }
 // α / density for a medium of `density` crossed over `k` × VXGI_MAX_OPTICAL_DEPTH of optical
