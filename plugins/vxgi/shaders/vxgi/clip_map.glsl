@@ -32,9 +32,10 @@
 // 0.388 at α = 0.9999, 0.365 at 0.999, 0.358 at 0.99; eight generated sunlit rooms
 // 0.358–0.519, 0.352–0.488, 0.345–0.457. One RGBA8 step is 1.8% opacity at the
 // transparent end; 25% and 6.25% (the seed's downsampled cube) store as 25.1% and 7.0%.
-const float VXGI_MAX_OPTICAL_DEPTH = 4.6052;  // −ln(1 − 0.99)
+const float VXGI_OPAQUE_VOXEL_ALPHA = 0.99;
+const float VXGI_MAX_OPTICAL_DEPTH = -log(1.0 - VXGI_OPAQUE_VOXEL_ALPHA);  // 4.61
 float vxgiDensityFromOpacity(float alpha) {
-  return -log(1.0 - clamp(alpha, 0.0, 0.99)) / VXGI_MAX_OPTICAL_DEPTH;
+  return -log(1.0 - clamp(alpha, 0.0, VXGI_OPAQUE_VOXEL_ALPHA)) / VXGI_MAX_OPTICAL_DEPTH;
 }
 float vxgiOpacityFromDensity(float density) { return 1.0 - exp(-max(density, 0.0) * VXGI_MAX_OPTICAL_DEPTH); }
 // α / density for a medium of `density` crossed over `k` × VXGI_MAX_OPTICAL_DEPTH of optical

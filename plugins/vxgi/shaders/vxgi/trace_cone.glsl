@@ -56,18 +56,13 @@ ConeTracingArguments DefaultConeTracingArguments() {
 
 // Opacity at which a cone has ended on a surface: it stops, and what it gathered is
 // renormalised to the whole cone (below). One opaque voxel is α = 0.99 (clip_map.glsl,
-// VXGI_MAX_OPTICAL_DEPTH), and a wall filtered over two texels, or covering part of a
-// footprint, gives a cone crossing it less, so a threshold at 0.99 let such cones march on
-// through the wall into what lies behind it: in a closed white furnace that is nothing, and
-// one bounce read 1.6% low (0.4% with α = 0.999), three 3.8%. Scan of this threshold at
-// α = 0.99 (stop 41, vxgi README), the furnace's irradiance over the exact with one and three
-// bounces: 0.984, 0.962 at 0.99; 0.996, 0.978 at 0.95; 0.998, 0.981 at 0.9; 0.9995, 0.984 at
-// 0.8 (α = 0.999 with 0.99: 0.996, 0.983); the darkest pixel of the four-bounce furnace (a
-// seam of two walls) 1.9131 of 1.9375 at 0.8, the highest threshold to beat α = 0.999's 1.9062
-// (0.9–0.85: 1.897). Lower thresholds brighten partial occluders: the Cornell box's
-// relative RMSE against the path tracer 0.326, 0.332, 0.343, 0.351, 0.358, 0.372 at
-// 0.99 … 0.7 (0.365 at α = 0.999). 0.8 is the highest at which no furnace figure falls below
-// α = 0.999's, and it still reads every scene measured closer.
+// VXGI_OPAQUE_VOXEL_ALPHA), and a wall filtered over two texels, or covering part of a
+// footprint, gives a cone crossing it less; with this at 0.99 such cones marched on through
+// the wall into what lies behind it (in a closed white furnace nothing: one bounce 1.6% low,
+// three 3.8%). Lower values brighten partial occluders (the Cornell box's error against the
+// path tracer grows again below 0.8). 0.8 is the highest at which no furnace figure falls
+// below α = 0.999's, and it still reads every scene measured closer: the scan of this
+// threshold is in the vxgi README (stop 41).
 const float VXGI_OPAQUE = 0.8;
 // Bounds the loop on any input (a NaN distance, a zero cone factor): 512 samples reach
 // 2^9 footprints even with step factor 0.1, past the coarsest mip of any clip-map.
