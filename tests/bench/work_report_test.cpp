@@ -19,6 +19,7 @@ DeviceCeilings someCeilings() {
   c.imageBytesPerSecond = 4e9;
   c.transferBytesPerSecond = 16e9;
   c.flopsPerSecond = 80e9;
+  c.dispatchesPerSecond = 20e3;  // 50 µs a dispatch
   return c;
 }
 
@@ -34,6 +35,12 @@ MeasuredColumn someColumn() {
   copy.work[size_t(WorkUnit::TransferBytes)] = 8e6;  // 4e9/s: a quarter of the transfer ceiling
   copy.work[size_t(WorkUnit::ImageBytes)] = 4e6;     // 2e9/s: half the shader-copy ceiling
   c.passes.push_back(copy);
+  // 0.4 MB in 0.5 ms: 20% of the shader-copy ceiling, and its 4 dispatches take 0.2 ms at
+  // best: with them, the device needs 0.1 + 0.2 of the 0.5 ms.
+  MeasuredPass small{"Small", 0.5, {}, {}};
+  small.work[size_t(WorkUnit::ImageBytes)] = 4e5;
+  small.work[size_t(WorkUnit::Dispatches)] = 4;
+  c.passes.push_back(small);
   return c;
 }
 
@@ -60,6 +67,23 @@ TEST(WorkReport, RatesAreWorkOverTimeAgainstTheUnitsCeiling) {
   EXPECT_DOUBLE_EQ(*copy[1].ceiling, 16e9);
   EXPECT_DOUBLE_EQ(*copy[1].fraction, 0.25);
   EXPECT_FALSE(workRates(someColumn().passes[0], nullptr)[0].fraction);  // --no-ceilings
+}
+
+TEST(WorkReport, DispatchesAreAFixedCostAgainstTheDispatchCeiling) {
+  const DeviceCeilings ceilings = someCeilings();
+  const std::vector<WorkRate> small = workRates(someColumn().passes[3], &ceilings);
+  ASSERT_EQ(small.size(), 2u);
+  EXPECT_EQ(small[0].unit, WorkUnit::ImageBytes);
+  EXPECT_DOUBLE_EQ(*small[0].fraction, 0.2);
+  EXPECT_NEAR(*small[0].withDispatchCost, 0.6, 1e-12);  // (0.1 + 0.2) ms of 0.5
+  EXPECT_EQ(small[1].unit, WorkUnit::Dispatches);
+  EXPECT_DOUBLE_EQ(*small[1].fraction, 0.4);  // 8000 dispatches/s against 20000
+  EXPECT_FALSE(small[1].withDispatchCost);
+  // A pass that reported no dispatches has no fixed cost to add.
+  EXPECT_FALSE(workRates(someColumn().passes[2], &ceilings)[0].withDispatchCost);
+  const std::string table = workTable(someColumn(), &ceilings);
+  EXPECT_NE(table.find("60.0%"), std::string::npos) << table;
+  EXPECT_NE(ceilingsTable({ceilings}).find("dispatches of 1 invocation"), std::string::npos);
 }
 
 TEST(WorkReport, TableNamesEveryPass) {
@@ -141,6 +165,9 @@ TEST(WorkReport, JsonIsWrittenAndParses) {
   EXPECT_TRUE(run["passes"][1]["work"].empty());
   EXPECT_DOUBLE_EQ(j["ceilings"]["transferBytesPerSecond"].get<double>(), 16e9);
   EXPECT_DOUBLE_EQ(run["passes"][2]["work"]["transferBytes"]["fraction"].get<double>(), 0.25);
+  EXPECT_TRUE(run["passes"][2]["work"]["transferBytes"]["fractionWithDispatchCost"].is_null());
+  EXPECT_NEAR(run["passes"][3]["work"]["imageBytes"]["fractionWithDispatchCost"].get<double>(), 0.6, 1e-12);
+  EXPECT_DOUBLE_EQ(j["ceilings"]["dispatchesPerSecond"].get<double>(), 20e3);
   std::filesystem::remove(path);
 }
 

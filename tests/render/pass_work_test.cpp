@@ -63,10 +63,13 @@ TEST_F(PassWorkTest, RecordedWorkArrivesNextToThePassTime) {
   EXPECT_EQ(work.recorded[size_t(WorkUnit::ImageBytes)], 2468u);
   EXPECT_EQ(work.recorded[size_t(WorkUnit::Flops)], 7u);
   EXPECT_EQ(work.recorded[size_t(WorkUnit::TextureSamples)], 0u);
+  // PassContext counts the dispatches it records, each a fixed cost to the device.
+  EXPECT_EQ(work.recorded[size_t(WorkUnit::Dispatches)], 1u);
   EXPECT_EQ(stats.passRecordedWork("Test.Work")[size_t(WorkUnit::ImageBytes)], 2468.0);
   // The engine's own passes report theirs: tone mapping reads an RGBA16F texel and
   // writes an RGBA8 one per pixel.
   EXPECT_EQ(pass(frame, "Tonemap").work.recorded[size_t(WorkUnit::ImageBytes)], 8u * 8u * (8u + 4u));
+  EXPECT_EQ(pass(frame, "Tonemap").work.recorded[size_t(WorkUnit::Dispatches)], 1u);
   engine->hooks().removeOwnedBy(kEngineOwner);
 }
 

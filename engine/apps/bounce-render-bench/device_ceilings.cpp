@@ -185,6 +185,28 @@ double trilinearSamplesPerSecond(const gpu::Device& device, gpu::PipelineCache& 
   return double(invocations) * kSteps / s;
 }
 
+// Dispatches of one invocation, each bound and pushed as a pass's are and followed by a
+// barrier (TimedDispatch puts one between repeats): what a dispatch costs however little it
+// computes. On lavapipe it is tens of microseconds (its threads start, wait and join), on a
+// GPU a few, and it bounds the rate of a pass whose work is small: a pass of n dispatches
+// takes at least n / this.
+double dispatchesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines,
+                           const TimedDispatch& timer, int runs) {
+  gpu::Buffer result(device, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::DeviceLocal,
+                     "ceiling.dispatch");
+  const gpu::Pipeline& p = pipelines.compute(shader("ceiling_dispatch.comp"));
+  const uint32_t value = 1;
+  const double s = timer.medianSeconds(
+      [&](VkCommandBuffer cmd) {
+        vkCmdBindPipeline(cmd, p.bindPoint(), p.handle());
+        gpu::DescriptorWrites(p).buffer("Result", result.handle()).push(device, cmd);
+        push(cmd, p, value);
+        vkCmdDispatch(cmd, 1, 1, 1);
+      },
+      runs);
+  return 1.0 / s;
+}
+
 }  // namespace
 
 std::optional<double> DeviceCeilings::scatteredPerSecond(WorkUnit unit) const {
@@ -204,6 +226,8 @@ std::optional<double> DeviceCeilings::perSecond(WorkUnit unit) const {
       return textureSamplesPerSecond;
     case WorkUnit::Flops:
       return flopsPerSecond;
+    case WorkUnit::Dispatches:
+      return dispatchesPerSecond;
     case WorkUnit::Rays:
       return std::nullopt;
   }
@@ -226,6 +250,8 @@ std::string DeviceCeilings::describe(WorkUnit unit) {
       return "trilinear RGBA16F 3D samples/s, coherent";
     case WorkUnit::Flops:
       return "FMA chains, flops/s";
+    case WorkUnit::Dispatches:
+      return "dispatches of 1 invocation + barrier/s";
     case WorkUnit::Rays:
       return "none (rays/s reported as measured)";
   }
@@ -238,7 +264,8 @@ namespace {
 constexpr double DeviceCeilings::*kRates[] = {
     &DeviceCeilings::textureSamplesPerSecond, &DeviceCeilings::scatteredTextureSamplesPerSecond,
     &DeviceCeilings::bufferBytesPerSecond,    &DeviceCeilings::imageBytesPerSecond,
-    &DeviceCeilings::transferBytesPerSecond,  &DeviceCeilings::flopsPerSecond};
+    &DeviceCeilings::transferBytesPerSecond,  &DeviceCeilings::flopsPerSecond,
+    &DeviceCeilings::dispatchesPerSecond};
 
 // Each rate of `measurements` picked by `pick` from its sorted values.
 template <class Pick>
@@ -281,6 +308,7 @@ DeviceCeilings measureDeviceCeilings(const gpu::Device& device, gpu::PipelineCac
   c.transferBytesPerSecond = transferBytesPerSecond(device, timer, runs);
   c.textureSamplesPerSecond = trilinearSamplesPerSecond(device, pipelines, timer, runs, false);
   c.scatteredTextureSamplesPerSecond = trilinearSamplesPerSecond(device, pipelines, timer, runs, true);
+  c.dispatchesPerSecond = dispatchesPerSecond(device, pipelines, timer, runs);
   c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return c;
 }

@@ -3,7 +3,8 @@
 // run as the passes they are compared with: trilinear RGBA16F 3D-texture samples/s
 // (coherent, and scattered as a cone tracer's lanes are), storage-buffer and storage-image
 // bandwidth (read + write bytes/s of a copy shader), the same for a transfer-command image
-// copy, and the FMA rate. Each is the median of several dispatches after a warm-up.
+// copy, the FMA rate, and the rate of dispatches that compute nothing (a dispatch's fixed
+// cost). Each is the median of several dispatches after a warm-up.
 //
 // bounce-render-bench measures them before the frames and again after each size and
 // variant, and compares a column with the higher of the two measurements around it: a
@@ -30,6 +31,7 @@ struct DeviceCeilings {
   double imageBytesPerSecond = 0.0;     ///< RGBA16F 3D storage image, imageLoad + imageStore
   double transferBytesPerSecond = 0.0;  ///< RGBA16F 3D image, vkCmdCopyImage, read + written
   double flopsPerSecond = 0.0;          ///< FMA chains, two flops each
+  double dispatchesPerSecond = 0.0;     ///< dispatches of one invocation, each with a barrier after it
   double seconds = 0.0;                 ///< wall time the measurements took
 
   /// The ceiling work in `unit` is compared with (none for rays).

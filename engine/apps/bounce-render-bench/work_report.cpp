@@ -28,8 +28,8 @@ std::string percent(const std::optional<double>& fraction) {
 }
 
 std::string jsonKey(WorkUnit unit) {
-  static constexpr const char* kKeys[] = {"bufferBytes", "imageBytes", "textureSamples",
-                                          "flops",       "rays",       "transferBytes"};
+  static constexpr const char* kKeys[] = {"bufferBytes", "imageBytes",    "textureSamples", "flops",
+                                          "rays",        "transferBytes", "dispatches"};
   return kKeys[size_t(unit)];
 }
 
@@ -44,6 +44,7 @@ nlohmann::json ceilingsJson(const DeviceCeilings& c) {
           {"imageBytesPerSecond", c.imageBytesPerSecond},
           {"transferBytesPerSecond", c.transferBytesPerSecond},
           {"flopsPerSecond", c.flopsPerSecond},
+          {"dispatchesPerSecond", c.dispatchesPerSecond},
           {"seconds", c.seconds}};
 }
 
@@ -62,6 +63,16 @@ std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* 
       r.scatteredFraction = r.perSecond / *r.scatteredCeiling;
     rates.push_back(r);
   }
+  // The pass's dispatches, each a fixed cost at the dispatch ceiling, added to each unit's
+  // least time: a pass of little work can reach only a small fraction of a rate ceiling.
+  const double dispatches = pass.work[size_t(WorkUnit::Dispatches)];
+  const std::optional<double> dispatchRate =
+      ceilings ? ceilings->perSecond(WorkUnit::Dispatches) : std::nullopt;
+  if (dispatches > 0.0 && dispatchRate && *dispatchRate > 0.0 && pass.milliseconds > 0.0)
+    for (WorkRate& r : rates)
+      if (r.unit != WorkUnit::Dispatches && r.ceiling && *r.ceiling > 0.0)
+        r.withDispatchCost =
+            (dispatches / *dispatchRate + r.amount / *r.ceiling) / (pass.milliseconds * 1e-3);
   return rates;
 }
 
@@ -77,7 +88,7 @@ std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements) {
                        si(*rate(highest)));
   };
   for (WorkUnit u : {WorkUnit::TextureSamples, WorkUnit::BufferBytes, WorkUnit::ImageBytes,
-                     WorkUnit::TransferBytes, WorkUnit::Flops}) {
+                     WorkUnit::TransferBytes, WorkUnit::Flops, WorkUnit::Dispatches}) {
     row(DeviceCeilings::describe(u), [u](const DeviceCeilings& c) { return c.perSecond(u); });
     if (median.scatteredPerSecond(u))
       row(DeviceCeilings::describeScattered(u),
@@ -91,24 +102,27 @@ std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements) {
 
 std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilings) {
   std::string out =
-      fmt::format("| {:<26} | {:<16} | {:>12} | {:>10} | {:>12} | {:>12} | {:>8} | {:>9} |\n", "pass", "work",
-                  "per frame", "ms", "per second", "ceiling", "fraction", "scattered");
+      fmt::format("| {:<26} | {:<16} | {:>12} | {:>10} | {:>12} | {:>12} | {:>8} | {:>9} | {:>8} |\n", "pass",
+                  "work", "per frame", "ms", "per second", "ceiling", "fraction", "scattered", "w/ fixed");
   out +=
       "|----------------------------|------------------|-------------:|-----------:|-------------:|"
-      "-------------:|---------:|----------:|\n";
+      "-------------:|---------:|----------:|---------:|\n";
   std::vector<std::string> silent;
   for (const MeasuredPass& pass : column.passes) {
     const std::vector<WorkRate> rates = workRates(pass, ceilingsFor(column, ceilings));
     if (rates.empty()) silent.push_back(pass.name);
     for (const WorkRate& r : rates)
-      out += fmt::format("| {:<26} | {:<16} | {:>12} | {:>10.3f} | {:>12} | {:>12} | {:>8} | {:>9} |\n",
-                         pass.name,
-                         std::string(workUnitName(r.unit)) + (pass.gpuCounted[size_t(r.unit)] ? "*" : ""),
-                         si(r.amount), pass.milliseconds, si(r.perSecond), r.ceiling ? si(*r.ceiling) : "-",
-                         percent(r.fraction), percent(r.scatteredFraction));
+      out += fmt::format(
+          "| {:<26} | {:<16} | {:>12} | {:>10.3f} | {:>12} | {:>12} | {:>8} | {:>9} | {:>8} |\n", pass.name,
+          std::string(workUnitName(r.unit)) + (pass.gpuCounted[size_t(r.unit)] ? "*" : ""), si(r.amount),
+          pass.milliseconds, si(r.perSecond), r.ceiling ? si(*r.ceiling) : "-", percent(r.fraction),
+          percent(r.scatteredFraction), percent(r.withDispatchCost));
   }
   out += "* includes what the pass's shaders counted (bounce/work_counters.glsl) in an untimed frame\n";
   out += "scattered: texture samples against the scattered-lanes ceiling (a cone tracer's access pattern)\n";
+  out +=
+      "w/ fixed: the least time for the work and for the pass's dispatches (each at the dispatch ceiling), "
+      "over the pass's time\n";
   if (!silent.empty()) {
     out += "reported no work:";
     for (const std::string& s : silent) out += " " + s;
@@ -144,6 +158,8 @@ nlohmann::json benchJson(const std::string& device, const std::string& scene, co
              r.scatteredCeiling ? nlohmann::json(*r.scatteredCeiling) : nlohmann::json(nullptr)},
             {"scatteredFraction",
              r.scatteredFraction ? nlohmann::json(*r.scatteredFraction) : nlohmann::json(nullptr)},
+            {"fractionWithDispatchCost",
+             r.withDispatchCost ? nlohmann::json(*r.withDispatchCost) : nlohmann::json(nullptr)},
             {"gpuCounted", p.gpuCounted[size_t(r.unit)]}};
       }
       run["passes"].push_back(std::move(pass));

@@ -42,6 +42,10 @@ struct WorkRate {
   std::optional<double> scatteredCeiling;   ///< texture samples: the scattered ceiling
   std::optional<double> fraction;           ///< perSecond / ceiling
   std::optional<double> scatteredFraction;  ///< perSecond / scatteredCeiling
+  /// The least time the device needs for this work and for the pass's dispatches (each at
+  /// the dispatch ceiling: a fixed cost), over the pass's time: what `fraction` would be
+  /// were the fixed costs free. None for the dispatches themselves, or without both ceilings.
+  std::optional<double> withDispatchCost;
 };
 /// The units `pass` did work in, in WorkUnit order.
 std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* ceilings);
@@ -50,7 +54,8 @@ std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* 
 /// empty).
 std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements);
 /// A row per pass and unit of work: work per frame, ms, rate, ceiling, fraction (and of
-/// the scattered ceiling, for texture samples), against the column's own ceilings where it
+/// the scattered ceiling, for texture samples; and counting the pass's dispatches' fixed
+/// cost), against the column's own ceilings where it
 /// has them, else `ceilings`. Passes that reported no work are listed at the end by name.
 std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilings);
 

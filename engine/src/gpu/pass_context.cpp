@@ -93,6 +93,7 @@ void PassContext::dispatchThreads(const gpu::Pipeline& pipeline, const gpu::Bind
   const auto local = pipeline.localSize();
   auto groups = [](uint32_t n, uint32_t l) { return (n + l - 1) / std::max(1u, l); };
   vkCmdDispatch(cmd(), groups(threads.x, local[0]), groups(threads.y, local[1]), groups(threads.z, local[2]));
+  addWork(WorkUnit::Dispatches, 1);
 }
 
 void PassContext::dispatchIndirect(const gpu::Pipeline& pipeline, const gpu::Bindings& bindings,
@@ -109,6 +110,7 @@ void PassContext::dispatchIndirect(const gpu::Pipeline& pipeline, const gpu::Bin
   bind(pipeline, bindings);
   pushConstants(pipeline, push, pushBytes);
   vkCmdDispatchIndirect(cmd(), args.handle(), offset);
+  addWork(WorkUnit::Dispatches, 1);
 }
 
 void PassContext::beginRendering(const RenderingInfo& info) const {

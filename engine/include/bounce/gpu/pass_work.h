@@ -31,13 +31,16 @@ enum class WorkUnit : uint8_t {
   Rays,            ///< rays traced (no device ceiling: reported as a rate)
   TransferBytes,   ///< bytes read plus bytes written by transfer commands (image copies, clears, fills):
                    ///< on a CPU device these are memcpy-speed loops, not shader invocations
+  Dispatches,      ///< compute dispatches recorded through PassContext (counted by it): each costs the
+                   ///< device a fixed time however little it computes, which bounds a small pass's rate
 };
-inline constexpr size_t kWorkUnitCount = 6;
+inline constexpr size_t kWorkUnitCount = 7;
 
-/// "buffer bytes", "image bytes", "texture samples", "flops", "rays", "transfer bytes".
+/// "buffer bytes", "image bytes", "texture samples", "flops", "rays", "transfer bytes",
+/// "dispatches".
 constexpr std::string_view workUnitName(WorkUnit unit) {
   constexpr std::array<std::string_view, kWorkUnitCount> names{
-      "buffer bytes", "image bytes", "texture samples", "flops", "rays", "transfer bytes"};
+      "buffer bytes", "image bytes", "texture samples", "flops", "rays", "transfer bytes", "dispatches"};
   return names[size_t(unit)];
 }
 

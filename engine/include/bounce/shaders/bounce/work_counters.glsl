@@ -28,6 +28,7 @@
 #define WORK_FLOPS 3u
 #define WORK_RAYS 4u
 #define WORK_TRANSFER_BYTES 5u  // counted by the C++ side of a pass only
+#define WORK_DISPATCHES 6u      // counted by PassContext only
 
 #ifdef BOUNCE_COUNT_WORK
 #ifndef WORK_COUNTERS_BINDING
@@ -35,7 +36,7 @@
 #endif
 
 layout(std430, binding = WORK_COUNTERS_BINDING) buffer BounceWorkCounters {
-  uint words[12];  // per unit: low word, high word
+  uint words[14];  // per unit: low word, high word
 } bounceWorkCounters;
 
 void countWork(uint unit, uint amount) {
