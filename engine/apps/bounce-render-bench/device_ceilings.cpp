@@ -187,9 +187,9 @@ double trilinearSamplesPerSecond(const gpu::Device& device, gpu::PipelineCache& 
 
 // Dispatches of one invocation, each bound and pushed as a pass's are and followed by a
 // barrier (TimedDispatch puts one between repeats): what a dispatch costs however little it
-// computes. On lavapipe it is tens of microseconds (its threads start, wait and join), on a
-// GPU a few, and it bounds the rate of a pass whose work is small: a pass of n dispatches
-// takes at least n / this.
+// computes: 22–27 µs on lavapipe on this project's 2-core machine (stop 42; its threads
+// start, wait and join). A lower bound for a pass of n dispatches, n / this, that bounds the
+// rate of a pass whose work is small; a dispatch of several workgroups costs lavapipe more.
 double dispatchesPerSecond(const gpu::Device& device, gpu::PipelineCache& pipelines,
                            const TimedDispatch& timer, int runs) {
   gpu::Buffer result(device, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::DeviceLocal,
