@@ -54,9 +54,9 @@ std::vector<WorkRate> workRates(const MeasuredPass& pass, const DeviceCeilings* 
 /// empty).
 std::string ceilingsTable(const std::vector<DeviceCeilings>& measurements);
 /// A row per pass and unit of work: work per frame, ms, rate, ceiling, fraction (and of
-/// the scattered ceiling, for texture samples; and counting the pass's dispatches' fixed
-/// cost), against the column's own ceilings where it
-/// has them, else `ceilings`. Passes that reported no work are listed at the end by name.
+/// the scattered ceiling, for texture samples; and with the pass's dispatches' fixed cost
+/// counted), against the column's own ceilings where it has them, else `ceilings`. Passes
+/// that reported no work are listed at the end by name.
 std::string workTable(const MeasuredColumn& column, const DeviceCeilings* ceilings);
 
 /// Everything above as one document: device, scene, technique, frames, the ceilings (null
