@@ -53,7 +53,8 @@ Rows parseCsv(const std::string& text) {
   return rows;
 }
 
-const std::vector<std::string> kFixedColumns = {"technique",
+const std::vector<std::string> kFixedColumns = {"scene",
+                                                "technique",
                                                 "label",
                                                 "default",
                                                 "settings",
@@ -76,7 +77,25 @@ const std::vector<std::string> kFixedColumns = {"technique",
                                                 "path_tracer_equivalent_ms",
                                                 "on_pareto_front",
                                                 "image",
-                                                "heat_map"};
+                                                "heat_map",
+                                                "total_rel_rmse_unbiased",
+                                                "direct_rel_rmse",
+                                                "direct_rel_mae",
+                                                "indirect_rel_rmse",
+                                                "indirect_rel_mae",
+                                                "indirect_rel_rmse_unbiased",
+                                                "indirect_mean_ratio",
+                                                "reference_noise_rel_rmse",
+                                                "reference_spp",
+                                                "flicker_mean",
+                                                "flicker_p95",
+                                                "response_frames_off",
+                                                "response_ms_off",
+                                                "response_frames_on",
+                                                "response_frames_move",
+                                                "peak_overshoot",
+                                                "off_residue",
+                                                "reaches_zero"};
 
 std::string column(const Rows& rows, size_t row, const std::string& name) {
   const auto& header = rows.at(0);
@@ -164,6 +183,53 @@ TEST(ReportCsv, RowHoldsTheMeasurementsValues) {
   EXPECT_EQ(column(rows, 1, "pass_gpu_ms:VXGI.Voxelize"), "4");
 }
 
+TEST(ReportCsv, ErrorsAgainstTheNoisyReferenceAndTemporalColumns) {
+  Report report;
+  report.scene = "scenes/room.gltf";
+  report.referenceSamples = 2048;
+  Measurement m = vxgiDefault();
+  m.direct = {.relativeRmse = 0.03, .relativeMae = 0.01};
+  m.indirect = {.relativeRmse = 0.25,
+                .relativeMae = 0.125,
+                .noiseRelativeRmse = 0.02,
+                .unbiasedRelativeRmse = 0.24,
+                .meanRatio = 0.75};
+  m.temporal = true;
+  m.flickerMean = 0.001;
+  m.flickerP95 = 0.004;
+  m.responseFramesOff = 12;
+  m.responseMsOff = 150;
+  m.responseFramesOn = 9;
+  m.responseFramesMove = -1;  // never settled: missing
+  m.peakOvershoot = 0.5;
+  m.offResidue = 0.0625;
+  m.reachesZero = false;
+  Measurement untimed = measured("Reference", "spp=4", 50, 0.3);  // no temporal columns
+  report.measurements = {m, untimed};
+  const Rows rows = writeAndParse(report);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(column(rows, 1, "scene"), "scenes/room.gltf");
+  EXPECT_EQ(column(rows, 1, "direct_rel_rmse"), "0.03");
+  EXPECT_EQ(column(rows, 1, "direct_rel_mae"), "0.01");
+  EXPECT_EQ(column(rows, 1, "indirect_rel_rmse"), "0.25");
+  EXPECT_EQ(column(rows, 1, "indirect_rel_mae"), "0.125");
+  EXPECT_EQ(column(rows, 1, "indirect_rel_rmse_unbiased"), "0.24");
+  EXPECT_EQ(column(rows, 1, "indirect_mean_ratio"), "0.75");
+  EXPECT_EQ(column(rows, 1, "reference_noise_rel_rmse"), "0.02");
+  EXPECT_EQ(column(rows, 1, "reference_spp"), "2048");
+  EXPECT_EQ(column(rows, 1, "flicker_mean"), "0.001");
+  EXPECT_EQ(column(rows, 1, "flicker_p95"), "0.004");
+  EXPECT_EQ(column(rows, 1, "response_frames_off"), "12");
+  EXPECT_EQ(column(rows, 1, "response_ms_off"), "150");
+  EXPECT_EQ(column(rows, 1, "response_frames_on"), "9");
+  EXPECT_EQ(column(rows, 1, "response_frames_move"), "");
+  EXPECT_EQ(column(rows, 1, "peak_overshoot"), "0.5");
+  EXPECT_EQ(column(rows, 1, "off_residue"), "0.0625");
+  EXPECT_EQ(column(rows, 1, "reaches_zero"), "0");
+  for (const char* c : {"flicker_mean", "response_frames_off", "reaches_zero", "direct_rel_rmse"})
+    EXPECT_EQ(column(rows, 2, c), "") << c;
+}
+
 TEST(ReportCsv, NumbersKeepSixSignificantDigits) {
   Report report;
   report.measurements = {measured("VXGI", "v", 1234.5678, 0.000123456789)};
@@ -188,7 +254,7 @@ TEST(ReportCsv, FieldsWithCommasQuotesAndLineBreaksAreQuotedAndRoundTrip) {
   EXPECT_EQ(column(rows, 1, "label"), "VXGI \"fast\", cones=4\nsecond line");
   EXPECT_EQ(column(rows, 1, "settings"), "r.VXGI.Cones=4,4");
   EXPECT_EQ(column(rows, 1, "technique"), "VXGI");  // plain fields stay unquoted
-  EXPECT_THAT(text, StartsWith("technique,label,"));
+  EXPECT_THAT(text, StartsWith("scene,technique,label,"));
 }
 
 TEST(ReportCsv, NaNOutOfRangeAndAbsentPassesAreEmptyFields) {
@@ -215,7 +281,7 @@ TEST(ReportCsv, ReplacesAnExistingFileWithoutLeavingTemporaries) {
   Report report;
   report.measurements = {measured("VXGI", "v", 1, 0.1)};
   ASSERT_TRUE(writeCsv(report, path, nullptr));
-  EXPECT_THAT(bounce::test::ScratchFolder::read(path), StartsWith("technique,"));
+  EXPECT_THAT(bounce::test::ScratchFolder::read(path), StartsWith("scene,technique,"));
   size_t files = 0;
   for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder.path() / "out"))
     ++files;

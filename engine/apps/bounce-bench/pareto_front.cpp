@@ -8,13 +8,11 @@ namespace {
 
 // A measurement without a cost or an error (a failed comparison leaves NaN) says nothing
 // about the trade-off: it neither sits on a front nor pushes a real point off one.
-bool comparable(const Measurement& m) {
-  return !std::isnan(m.totalMs) && !std::isnan(m.radiance.relativeRmse);
-}
+bool comparable(const Measurement& m) { return !std::isnan(m.totalMs) && !std::isnan(primaryError(m)); }
 
 bool dominates(const Measurement& a, const Measurement& b) {
   const double aMs = a.totalMs, bMs = b.totalMs;
-  const double aErr = a.radiance.relativeRmse, bErr = b.radiance.relativeRmse;
+  const double aErr = primaryError(a), bErr = primaryError(b);
   return aMs <= bMs && aErr <= bErr && (aMs < bMs || aErr < bErr);
 }
 

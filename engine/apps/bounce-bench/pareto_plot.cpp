@@ -57,15 +57,20 @@ void drawGridAndTicks(PlotCanvas& canvas, const ParetoPlotLayout& layout) {
 
 void drawTitles(PlotCanvas& canvas, const ParetoPlotLayout& layout, const Report& report) {
   const PixelRect& frame = layout.plot;
-  const std::string title =
-      report.scene.empty() ? "Radiance error versus time" : "Radiance error versus time: " + report.scene;
+  // Indirect light's error once the report measured it (primaryError), else radiance's.
+  const bool indirect =
+      std::any_of(report.measurements.begin(), report.measurements.end(),
+                  [](const Measurement& m) { return !std::isnan(m.indirect.relativeRmse); });
+  const std::string what = indirect ? "Indirect light error versus time" : "Radiance error versus time";
+  const std::string title = report.scene.empty() ? what : what + ": " + report.scene;
   canvas.text({frame.min.x, 20}, title, kTextScale, kInk);
 
   const std::string xTitle = "milliseconds per frame (GPU + CPU, log scale)";
   canvas.text(
       {(frame.min.x + frame.max.x - PlotCanvas::textLength(xTitle, kTextScale)) / 2, frame.max.y + 40},
       xTitle, kTextScale, kInk);
-  const std::string yTitle = "radiance relative RMSE (log scale)";
+  const std::string yTitle =
+      indirect ? "indirect light relative RMSE (log scale)" : "radiance relative RMSE (log scale)";
   canvas.text({18, (frame.min.y + frame.max.y + PlotCanvas::textLength(yTitle, kTextScale)) / 2}, yTitle,
               kTextScale, kInk, TextDirection::Up);
 }

@@ -120,7 +120,7 @@ ParetoPlotLayout paretoPlotLayout(const Report& report) {
 
   LogRange ms, error;
   for (const Measurement& m : report.measurements) {
-    const double lx = logOf(m.totalMs), ly = logOf(m.radiance.relativeRmse);
+    const double lx = logOf(m.totalMs), ly = logOf(primaryError(m));
     if (std::isnan(lx) || std::isnan(ly)) continue;
     ms.add(lx);
     error.add(ly);
@@ -150,7 +150,7 @@ glm::dvec2 legendSampleCentre(const ParetoPlotLayout& layout, size_t row) {
 }
 
 std::optional<glm::dvec2> plotPosition(const ParetoPlotLayout& layout, const Measurement& m) {
-  const glm::dvec2 p(layout.x.toPixel(m.totalMs), layout.y.toPixel(m.radiance.relativeRmse));
+  const glm::dvec2 p(layout.x.toPixel(m.totalMs), layout.y.toPixel(primaryError(m)));
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) return std::nullopt;
   return p;
 }

@@ -13,9 +13,9 @@ void assignPathTracerEquivalents(std::vector<Measurement>& measurements) {
   };
   std::vector<Point> curve;
   for (const Measurement& m : measurements)
-    if (equalsIgnoreCase(m.config.technique, "Reference") && std::isfinite(m.radiance.relativeRmse) &&
-        m.radiance.relativeRmse > 0 && m.totalMs > 0)
-      curve.push_back({m.totalMs, m.radiance.relativeRmse});
+    if (equalsIgnoreCase(m.config.technique, "Reference") && std::isfinite(primaryError(m)) &&
+        primaryError(m) > 0 && m.totalMs > 0)
+      curve.push_back({m.totalMs, primaryError(m)});
   if (curve.empty()) return;
   std::sort(curve.begin(), curve.end(), [](const Point& a, const Point& b) { return a.ms < b.ms; });
   // More samples can only lower the expected error; keep the curve monotone so noise in
@@ -38,8 +38,8 @@ void assignPathTracerEquivalents(std::vector<Measurement>& measurements) {
     return -1.0;
   };
   for (Measurement& m : measurements)
-    if (std::isfinite(m.radiance.relativeRmse) && m.radiance.relativeRmse > 0)
-      m.pathTracerEquivalentMs = timeFor(m.radiance.relativeRmse);
+    if (std::isfinite(primaryError(m)) && primaryError(m) > 0)
+      m.pathTracerEquivalentMs = timeFor(primaryError(m));
 }
 
 }  // namespace bounce::bench

@@ -64,11 +64,69 @@ void appendRow(std::string& out, const std::vector<std::string>& fields) {
   out += '\n';
 }
 
+// A count that may be unknown (−1): missing, not a number.
+std::string csvCount(int value) { return value < 0 ? std::string() : std::to_string(value); }
+
+void appendMeasurement(std::string& out, const Report& report, const Measurement& m,
+                       const std::vector<std::string>& passes) {
+  std::vector<std::string> row = {
+      report.scene,
+      m.config.technique,
+      m.config.label,
+      m.config.isDefault ? "1" : "0",
+      settingsText(m.config),
+      csvNumber(m.gpuMs),
+      csvNumber(m.cpuMs),
+      csvNumber(m.totalMs),
+      std::to_string(m.settlingFrames),
+      std::to_string(m.persistentBytes),
+      std::to_string(m.transientBytes),
+      csvNumber(m.radiance.relativeRmse),
+      csvNumber(m.radiance.meanRelativeError),
+      csvNumber(m.radiance.maxAbsoluteError),
+      csvNumber(m.radiance.meanRatio),
+      csvNumber(m.irradiance.relativeRmse),
+      csvNumber(m.irradiance.meanRelativeError),
+      csvNumber(m.irradiance.maxAbsoluteError),
+      csvNumber(m.irradiance.meanRatio),
+      csvNumber(m.irradiance.lowestRegionRatio),
+      csvNumber(m.irradiance.highestRegionRatio),
+      // Negative means "outside the path tracer's measured range": missing, like NaN.
+      m.pathTracerEquivalentMs < 0 ? std::string() : csvNumber(m.pathTracerEquivalentMs),
+      m.onParetoFront ? "1" : "0",
+      m.image,
+      m.heatMap,
+      csvNumber(m.total.unbiasedRelativeRmse),
+      csvNumber(m.direct.relativeRmse),
+      csvNumber(m.direct.relativeMae),
+      csvNumber(m.indirect.relativeRmse),
+      csvNumber(m.indirect.relativeMae),
+      csvNumber(m.indirect.unbiasedRelativeRmse),
+      csvNumber(m.indirect.meanRatio),
+      csvNumber(m.indirect.noiseRelativeRmse),
+      std::to_string(report.referenceSamples),
+      m.temporal ? csvNumber(m.flickerMean) : std::string(),
+      m.temporal ? csvNumber(m.flickerP95) : std::string(),
+      m.temporal ? csvCount(m.responseFramesOff) : std::string(),
+      m.temporal && m.responseMsOff >= 0 ? csvNumber(m.responseMsOff) : std::string(),
+      m.temporal ? csvCount(m.responseFramesOn) : std::string(),
+      m.temporal ? csvCount(m.responseFramesMove) : std::string(),
+      m.temporal ? csvNumber(m.peakOvershoot) : std::string(),
+      m.temporal ? csvNumber(m.offResidue) : std::string(),
+      m.temporal ? (m.reachesZero ? "1" : "0") : std::string(),
+  };
+  for (const std::string& pass : passes) row.push_back(csvNumber(passMs(m, pass)));
+  appendRow(out, row);
+}
+
 }  // namespace
 
-bool writeCsv(const Report& report, const std::string& path, std::string* error) {
-  const std::vector<std::string> passes = passNamesInFirstSeenOrder(report.measurements);
-  std::vector<std::string> header = {"technique",
+bool writeCsv(const std::vector<Report>& reports, const std::string& path, std::string* error) {
+  std::vector<Measurement> all;
+  for (const Report& r : reports) all.insert(all.end(), r.measurements.begin(), r.measurements.end());
+  const std::vector<std::string> passes = passNamesInFirstSeenOrder(all);
+  std::vector<std::string> header = {"scene",
+                                     "technique",
                                      "label",
                                      "default",
                                      "settings",
@@ -91,43 +149,36 @@ bool writeCsv(const Report& report, const std::string& path, std::string* error)
                                      "path_tracer_equivalent_ms",
                                      "on_pareto_front",
                                      "image",
-                                     "heat_map"};
+                                     "heat_map",
+                                     "total_rel_rmse_unbiased",
+                                     "direct_rel_rmse",
+                                     "direct_rel_mae",
+                                     "indirect_rel_rmse",
+                                     "indirect_rel_mae",
+                                     "indirect_rel_rmse_unbiased",
+                                     "indirect_mean_ratio",
+                                     "reference_noise_rel_rmse",
+                                     "reference_spp",
+                                     "flicker_mean",
+                                     "flicker_p95",
+                                     "response_frames_off",
+                                     "response_ms_off",
+                                     "response_frames_on",
+                                     "response_frames_move",
+                                     "peak_overshoot",
+                                     "off_residue",
+                                     "reaches_zero"};
   for (const std::string& pass : passes) header.push_back(fmt::format("{}{}", kPassColumnPrefix, pass));
 
   std::string out;
   appendRow(out, header);
-  for (const Measurement& m : report.measurements) {
-    std::vector<std::string> row = {
-        m.config.technique,
-        m.config.label,
-        m.config.isDefault ? "1" : "0",
-        settingsText(m.config),
-        csvNumber(m.gpuMs),
-        csvNumber(m.cpuMs),
-        csvNumber(m.totalMs),
-        std::to_string(m.settlingFrames),
-        std::to_string(m.persistentBytes),
-        std::to_string(m.transientBytes),
-        csvNumber(m.radiance.relativeRmse),
-        csvNumber(m.radiance.meanRelativeError),
-        csvNumber(m.radiance.maxAbsoluteError),
-        csvNumber(m.radiance.meanRatio),
-        csvNumber(m.irradiance.relativeRmse),
-        csvNumber(m.irradiance.meanRelativeError),
-        csvNumber(m.irradiance.maxAbsoluteError),
-        csvNumber(m.irradiance.meanRatio),
-        csvNumber(m.irradiance.lowestRegionRatio),
-        csvNumber(m.irradiance.highestRegionRatio),
-        // Negative means "outside the path tracer's measured range": missing, like NaN.
-        m.pathTracerEquivalentMs < 0 ? std::string() : csvNumber(m.pathTracerEquivalentMs),
-        m.onParetoFront ? "1" : "0",
-        m.image,
-        m.heatMap,
-    };
-    for (const std::string& pass : passes) row.push_back(csvNumber(passMs(m, pass)));
-    appendRow(out, row);
-  }
+  for (const Report& report : reports)
+    for (const Measurement& m : report.measurements) appendMeasurement(out, report, m, passes);
   return writeReportFile(path, out, error);
+}
+
+bool writeCsv(const Report& report, const std::string& path, std::string* error) {
+  return writeCsv(std::vector<Report>{report}, path, error);
 }
 
 }  // namespace bounce::bench

@@ -92,13 +92,17 @@ std::string bouncesText(int32_t bounces) {
   return bounces < 0 ? std::string("unlimited bounces") : fmt::format("{} bounces", bounces);
 }
 
-void appendSetup(std::string& out, const Report& report) {
-  out += "## Setup\n\n";
+void appendSetup(std::string& out, const Report& report, const std::string& heading) {
+  out += fmt::format("{} Setup\n\n", heading);
   out += fmt::format("- Scene: `{}`\n", report.scene);
   out += fmt::format("- Image: {} × {} pixels\n", report.width, report.height);
   out += fmt::format("- Device: {}\n", report.device.empty() ? std::string(kMissing) : report.device);
   out += fmt::format("- Reference: path tracer, {} samples per pixel, {}, rendered in {:.1f} s\n",
                      report.referenceSamples, bouncesText(report.referenceBounces), report.referenceSeconds);
+  if (report.referenceNoise > 0 || !report.referenceStop.empty())
+    out += fmt::format("- Reference noise: its indirect light's relative RMSE is {} ({})\n",
+                       errorValue(report.referenceNoise),
+                       report.referenceStop.empty() ? std::string(kMissing) : report.referenceStop);
   out += fmt::format("- Timed frames: {} per configuration (times are medians)\n\n", report.timedFrames);
 }
 
@@ -113,22 +117,52 @@ void appendLegend(std::string& out) {
       "- **Settles after**: untimed frames before the technique's results settled (a probe volume's "
       "warm-up), rendered before the timed ones; 0 when the first frame is what it settles to.\n";
   out +=
-      "- **Rel. RMSE**: root-mean-square error against the reference divided by the reference's mean; "
-      "**mean rel. error**: per-pixel |error| / (|reference| + ε), averaged. Radiance is the final image, "
-      "irradiance the indirect-irradiance output; **irradiance ÷ reference**: its mean over the reference's, "
-      "the bias an RMSE does not show (1.2: 20% too bright on average); **by region**: the same ratio's "
-      "lowest and highest over a 4 × 4 grid of the image, leaving out cells with under 1/64 of the "
-      "reference's light (a mean of 1.2 can be 0.1 in one place and 2 in another).\n";
+      "- Errors are measured on a still averaged over sub-pixel offsets, against a reference whose samples "
+      "cover each pixel's square, so edges are not error. **Rel. RMSE**: root-mean-square error against the "
+      "reference divided by the reference's mean. **Direct**: the `direct` outputs (emission and direct "
+      "light); **indirect**: each image's radiance less its own direct light, what a GI technique adds, "
+      "against the reference's. The reference is two independent halves: **noise removed** takes their "
+      "measured noise out of the squared error (0 when the image is closer than the noise can tell); "
+      "**÷ reference**: the mean over the reference's, the bias an RMSE does not show (1.2: 20% too bright "
+      "on average).\n";
+  out +=
+      "- **Radiance** is the final image; **mean rel. error**: per-pixel |error| / (|reference| + ε), "
+      "averaged; **irradiance** the indirect-irradiance output; **by region**: its ratio's lowest and "
+      "highest "
+      "over a 4 × 4 grid of the image, leaving out cells with under 1/64 of the reference's light.\n";
+  out +=
+      "- **Flicker**: per pixel, luminance's standard deviation over its mean across still frames; the "
+      "mean over pixels and the 95th percentile. **Response frames**: frames until the image stays within 5% "
+      "(relative MAE) of where it settles after the strongest light is switched off, on again, and moved by "
+      "10% of the scene's size (never: not within the frames measured). **Reaches 0**: whether the light "
+      "switched off leaves nothing behind (at most 1/1000 of the scene's light; otherwise what is left).\n";
   out +=
       "- **Path tracer needs**: how many times this configuration's time the path tracer needs to reach "
-      "the same radiance rel. RMSE (— outside the range the benchmark measured).\n";
+      "the same indirect rel. RMSE (— outside the range the benchmark measured).\n";
   out +=
       "- **Pareto**: ✓ when no configuration of the same technique is both at least as fast and at "
-      "least as accurate, and better in one.\n";
+      "least as accurate (indirect rel. RMSE), and better in one.\n";
   out += "- **Image**, **heat map**: the tone-mapped image and its relative radiance error.\n\n";
 }
 
-void appendTechniqueTable(std::string& out, const TechniqueGroup& group) {
+// "mean / p95" of the flicker, "off / on / move" response frames, "yes"/"no": — when the
+// configuration's behaviour over time was not measured.
+std::string flickerCell(const Measurement& m) {
+  if (!m.temporal) return std::string(kMissing);
+  return fmt::format("{} / {}", errorValue(m.flickerMean), errorValue(m.flickerP95));
+}
+std::string responseCell(const Measurement& m) {
+  if (!m.temporal) return std::string(kMissing);
+  auto frames = [](int f) { return f < 0 ? std::string("never") : std::to_string(f); };
+  return fmt::format("{} / {} / {}", frames(m.responseFramesOff), frames(m.responseFramesOn),
+                     frames(m.responseFramesMove));
+}
+std::string zeroCell(const Measurement& m) {
+  if (!m.temporal) return std::string(kMissing);
+  return m.reachesZero ? "yes" : fmt::format("no ({})", errorValue(m.offResidue));
+}
+
+void appendTechniqueTable(std::string& out, const TechniqueGroup& group, const std::string& heading) {
   std::vector<const Measurement*> rows = group.members;
   // Fastest first; a measurement without a time goes last rather than breaking the order.
   std::stable_sort(rows.begin(), rows.end(), [](const Measurement* a, const Measurement* b) {
@@ -137,29 +171,35 @@ void appendTechniqueTable(std::string& out, const TechniqueGroup& group) {
     return a->totalMs < b->totalMs;
   });
 
-  out += fmt::format("## {}\n\n", cellText(group.technique));
+  out += fmt::format("{} {}\n\n", heading, cellText(group.technique));
   out +=
-      "| Configuration | GPU ms | CPU ms | Total ms | Memory MiB | Settles after | Radiance rel. RMSE | "
-      "Radiance mean rel. error | Irradiance rel. RMSE | Irradiance ÷ reference | By region | Path tracer "
-      "needs | Pareto | Image | Heat map |\n";
-  out += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|---|---|\n";
+      "| Configuration | GPU ms | CPU ms | Total ms | Memory MiB | Settles after | Direct rel. RMSE | "
+      "Indirect "
+      "rel. RMSE | Indirect, noise removed | Indirect ÷ reference | Radiance rel. RMSE | Radiance mean rel. "
+      "error | Irradiance rel. RMSE | Irradiance ÷ reference | By region | Flicker mean / p95 | Response "
+      "frames off / on / move | Reaches 0 | Path tracer needs | Pareto | Image | Heat map |\n";
+  out += "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|---|---|\n";
   for (const Measurement* m : rows) {
     const std::string label = cellText(m->config.label.empty() ? m->config.technique : m->config.label);
-    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
-                       m->config.isDefault ? fmt::format("**{}**", label) : label, milliseconds(m->gpuMs),
-                       milliseconds(m->cpuMs), milliseconds(m->totalMs),
-                       mebibytes(m->persistentBytes + m->transientBytes), m->settlingFrames,
-                       errorValue(m->radiance.relativeRmse), errorValue(m->radiance.meanRelativeError),
-                       errorValue(m->irradiance.relativeRmse), errorValue(m->irradiance.meanRatio),
-                       regionRange(m->irradiance), pathTracerRatio(*m), m->onParetoFront ? "✓" : "",
-                       link("img", m->image), link("heat map", m->heatMap));
+    out += fmt::format(
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} "
+        "| {} "
+        "| {} |\n",
+        m->config.isDefault ? fmt::format("**{}**", label) : label, milliseconds(m->gpuMs),
+        milliseconds(m->cpuMs), milliseconds(m->totalMs), mebibytes(m->persistentBytes + m->transientBytes),
+        m->settlingFrames, errorValue(m->direct.relativeRmse), errorValue(m->indirect.relativeRmse),
+        errorValue(m->indirect.unbiasedRelativeRmse), errorValue(m->indirect.meanRatio),
+        errorValue(m->radiance.relativeRmse), errorValue(m->radiance.meanRelativeError),
+        errorValue(m->irradiance.relativeRmse), errorValue(m->irradiance.meanRatio),
+        regionRange(m->irradiance), flickerCell(*m), responseCell(*m), zeroCell(*m), pathTracerRatio(*m),
+        m->onParetoFront ? "✓" : "", link("img", m->image), link("heat map", m->heatMap));
   }
   out += '\n';
 }
 
-void appendNotes(std::string& out, const std::vector<std::string>& notes) {
+void appendNotes(std::string& out, const std::vector<std::string>& notes, const std::string& heading) {
   if (notes.empty()) return;
-  out += "## Notes\n\n";
+  out += fmt::format("{} Notes\n\n", heading);
   for (const std::string& note : notes) {
     // Continuation lines indented so a multi-line note stays one bullet.
     std::string bullet;
@@ -174,19 +214,47 @@ void appendNotes(std::string& out, const std::vector<std::string>& notes) {
 
 }  // namespace
 
-bool writeMarkdown(const Report& report, const std::string& path, std::string* error) {
-  std::string out = fmt::format("# Bounce GI benchmark: {}\n\n", report.scene);
-  const std::string fence = codeFence(report.command);
-  out += fmt::format("Reproduce with:\n\n{}sh\n{}\n{}\n\n", fence, report.command, fence);
-  appendSetup(out, report);
-  appendLegend(out);
+namespace {
+
+// One scene's setup, tables, notes and plot under `heading` (## for a report of one
+// scene, ### below the scene's own heading otherwise).
+void appendScene(std::string& out, const Report& report, const std::string& heading) {
+  appendSetup(out, report, heading);
   const std::vector<TechniqueGroup> groups = groupByTechnique(report.measurements);
   if (groups.empty()) out += "No configurations were measured.\n\n";
-  for (const TechniqueGroup& group : groups) appendTechniqueTable(out, group);
-  appendNotes(out, report.notes);
-  out += "## Accuracy versus time\n\n";
-  out += "![Radiance relative RMSE against milliseconds per frame, log-log](pareto.png)\n";
+  for (const TechniqueGroup& group : groups) appendTechniqueTable(out, group, heading);
+  appendNotes(out, report.notes, heading);
+  out += fmt::format("{} Accuracy versus time\n\n", heading);
+  out += fmt::format("![Indirect light's relative RMSE against milliseconds per frame, log-log]({})\n\n",
+                     linkTarget(report.plotFile));
+}
+
+}  // namespace
+
+bool writeMarkdown(const std::vector<Report>& reports, const std::string& path, std::string* error) {
+  if (reports.empty())
+    return writeReportFile(path, "# Bounce GI benchmark\n\nNo scene was measured.\n", error);
+  std::string out = reports.size() == 1 ? fmt::format("# Bounce GI benchmark: {}\n\n", reports[0].scene)
+                                        : std::string("# Bounce GI benchmark\n\n");
+  const std::string& command = reports[0].command;
+  const std::string fence = codeFence(command);
+  out += fmt::format("Reproduce with:\n\n{}sh\n{}\n{}\n\n", fence, command, fence);
+  for (const std::string& line : reports[0].preamble) out += line + "\n";
+  if (!reports[0].preamble.empty()) out += '\n';
+  appendLegend(out);
+  if (reports.size() == 1) {
+    appendScene(out, reports[0], "##");
+  } else {
+    for (const Report& r : reports) {
+      out += fmt::format("## {}\n\n", cellText(r.scene));
+      appendScene(out, r, "###");
+    }
+  }
   return writeReportFile(path, out, error);
+}
+
+bool writeMarkdown(const Report& report, const std::string& path, std::string* error) {
+  return writeMarkdown(std::vector<Report>{report}, path, error);
 }
 
 }  // namespace bounce::bench

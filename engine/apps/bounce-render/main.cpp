@@ -1,7 +1,7 @@
 // bounce-render: renders a glTF scene with a GI technique on Vulkan.
 //
 //   bounce-render --scene FILE.gltf [--gi NAME|none] [--width W] [--height H]
-//       [--frames N] [--ini FILE]... [--set CVAR=VALUE]...
+//       [--frames N] [--accumulate N] [--ini FILE]... [--set CVAR=VALUE]...
 //       [--out FILE.png] [--aov NAME=FILE.exr]... [--stats FILE.json]
 //       [--device NAME] [--print-graph] [--graph-json FILE] [--keep-going]
 //       [--plugin-dir DIR]...
@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   CLI::App app{"bounce-render: render a glTF scene with a GI technique"};
   bounce::app::acceptUnrealSpellings(app);
   std::string scenePath, technique, outPath, statsPath, graphJson, deviceName;
-  uint32_t width = 512, height = 512, frames = 0, maxFrames = 1000;
+  uint32_t width = 512, height = 512, frames = 0, maxFrames = 1000, accumulate = 1;
   bool printGraph = false, keepGoing = false;
   std::vector<std::string> inis, sets, aovArgs, enable, disable, pluginDirs;
   app.add_option("--scene", scenePath, "glTF scene to load")->required();
@@ -65,6 +65,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1u, 100000u));
   app.add_option("--max-frames", maxFrames, "Most frames to render without --frames (default 1000)")
       ->check(CLI::Range(1u, 100000u));
+  app.add_option("--accumulate", accumulate,
+                 "Average this many frames, each sampling its pixels elsewhere in their squares, after the "
+                 "last frame (antialiased as the path tracer's box-filtered pixels; 1 to 4096)")
+      ->check(CLI::Range(1u, 4096u));
   app.add_option("--ini", inis, "Extra ini file, applied after the user ini (repeatable)");
   app.add_option("--set", sets, "Console variable NAME=VALUE at command-line priority (repeatable)");
   app.add_option("--out", outPath, "Write the tone-mapped image as PNG");
@@ -140,6 +144,10 @@ int main(int argc, char** argv) {
       bounce::RenderedFrame frame = renderer.render(view, outputs, f);
       if (!frame.gpu.ok()) return fail(kBadInput, frame.gpu.errors.front());
       const bool isLast = f + 1 == most || (untilSettled && frame.settling.empty());
+      if (isLast && accumulate > 1) {
+        frame = renderer.renderAccumulated(view, outputs, f + 1, accumulate);
+        if (!frame.gpu.ok()) return fail(kBadInput, frame.gpu.errors.front());
+      }
       // The first frame compiles pipelines and fills caches: it is timed only when alone.
       if (f > 0 || isLast) stats.addFrame(frame.gpu, frame.cpu);
       if (isLast) {

@@ -28,8 +28,27 @@ FrameView FrameView::fromCamera(const Camera& camera, uint32_t width, uint32_t h
   v.projection = v.camera.projection(output);
   v.viewProjection = v.projection * v.view;
   v.inverseViewProjection = glm::inverse(v.viewProjection);
+  v.unjitteredViewProjection = v.viewProjection;
   v.position = camera.position();
   return v;
+}
+
+void FrameView::setJitter(glm::vec2 pixels) {
+  for (int i = 0; i < 2; ++i)
+    pixels[i] = std::isfinite(pixels[i]) ? std::clamp(pixels[i], -0.5f, 0.5f) : 0.0f;
+  // Sampling each pixel `pixels` away from its centre is moving the image by −pixels: a
+  // translation in NDC (x right, y down, as pixels) by −2·pixels/size after the divide,
+  // i.e. clip x += δx · w. Adding δ × (the projection's row that makes w) to the rows
+  // that make x and y does that for perspective (w = −z_view) and orthographic (w = 1)
+  // projections alike.
+  const glm::vec2 ndc = -2.0f * (pixels - jitter) / glm::vec2(float(width), float(height));
+  for (int c = 0; c < 4; ++c) {
+    projection[c][0] += ndc.x * projection[c][3];
+    projection[c][1] += ndc.y * projection[c][3];
+  }
+  jitter = pixels;
+  viewProjection = projection * view;
+  inverseViewProjection = glm::inverse(viewProjection);
 }
 
 }  // namespace bounce

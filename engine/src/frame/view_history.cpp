@@ -9,7 +9,9 @@ void ViewHistory::advance(FrameView& view, std::string_view technique) {
     view.previousPosition = last_->position;
     view.historyValid =
         !cut_ && last_->width == view.width && last_->height == view.height && last_->technique == technique;
-    moved_ = last_->viewProjection != view.viewProjection || last_->position != view.position;
+    // A new sub-pixel jitter (bounce-render --accumulate) is not a moving camera.
+    moved_ =
+        last_->unjitteredViewProjection != view.unjitteredViewProjection || last_->position != view.position;
   } else {
     // No previous frame: "previous" is this one, so reprojection is the identity.
     view.previousViewProjection = view.viewProjection;
@@ -17,7 +19,8 @@ void ViewHistory::advance(FrameView& view, std::string_view technique) {
     view.historyValid = false;
   }
   cut_ = false;
-  last_ = Last{view.viewProjection, view.position, view.width, view.height, std::string(technique)};
+  last_ = Last{view.viewProjection, view.unjitteredViewProjection, view.position, view.width,
+               view.height,         std::string(technique)};
 }
 
 }  // namespace bounce

@@ -60,9 +60,17 @@ void* createLeaf(RTCThreadLocalAllocator alloc, const RTCBuildPrimitive* prims, 
   return &leaf->header;
 }
 
-bool finiteBox(const Aabb& b) {
-  return !b.empty() && std::isfinite(b.min.x) && std::isfinite(b.min.y) && std::isfinite(b.min.z) &&
-         std::isfinite(b.max.x) && std::isfinite(b.max.y) && std::isfinite(b.max.z);
+// A box the builder can weigh: finite, and small enough that its surface area is too.
+// Embree's binned SAH multiplies extents in float: a box 6e38 wide (a vertex at ±3e38, the
+// hostile corpus's geometry_huge) makes the area infinite, the costs NaN, and the
+// builder's assertion abort the process. 1e18 m keeps 6·(2e18)² = 2.4e37 under FLT_MAX, and
+// is far past the 1e7 m that rendering resolves (such geometry's instances are skipped).
+bool buildableBox(const Aabb& b) {
+  constexpr float kLargest = 1e18f;
+  auto within = [](const glm::vec3& p) {
+    return std::abs(p.x) <= kLargest && std::abs(p.y) <= kLargest && std::abs(p.z) <= kLargest;
+  };
+  return !b.empty() && within(b.min) && within(b.max);  // false for NaN too
 }
 
 class Flattener {
@@ -144,7 +152,7 @@ FlatBvh BvhBuilder::build(std::span<const Aabb> boxes, uint32_t maxLeafSize, uin
   prims.reserve(boxes.size());
   for (size_t i = 0; i < boxes.size(); ++i) {
     const Aabb& b = boxes[i];
-    if (!finiteBox(b)) continue;
+    if (!buildableBox(b)) continue;
     RTCBuildPrimitive p{};
     p.lower_x = b.min.x, p.lower_y = b.min.y, p.lower_z = b.min.z, p.geomID = 0;
     p.upper_x = b.max.x, p.upper_y = b.max.y, p.upper_z = b.max.z, p.primID = unsigned(i);

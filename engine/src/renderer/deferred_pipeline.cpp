@@ -4,6 +4,7 @@
 #include "bounce/gpu/image.h"
 #include "bounce/gpu/pass_context.h"
 #include "bounce/graph/channels.h"
+#include "bounce/raytracing/ray_tracing.h"
 #include "renderer/light_setup.h"
 #include "renderer/shadow_map_cache.h"
 
@@ -239,6 +240,7 @@ void DeferredPipeline::lighting(RenderGraph& g, const FrameContext& frame) const
   push.lightCount = uint32_t(frame.scene.lights().size());
   push.width = frame.view.width;
   push.height = frame.view.height;
+  const bool rayTracedShadows = frame.setting(settings_.rayTracedShadows);
   g.addPass("Lighting", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     TextureHandle base = b.read(bb.texture(channels::GBufferBaseColor), Access::Sampled);
     TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
@@ -247,7 +249,19 @@ void DeferredPipeline::lighting(RenderGraph& g, const FrameContext& frame) const
     TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
     BufferHandle lights = b.read(bb.buffer(channels::SceneLights), Access::StorageRead);
     BufferHandle matrices = b.read(bb.buffer(channels::ShadowMatrices), Access::StorageRead);
-    TextureHandle shadows = b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
+    // Ray-traced shadows read the scene's acceleration structure (built because this pass
+    // reads it) instead of the shadow maps, which are then culled unless a plugin reads them.
+    const RayTracingSceneHandles rt =
+        rayTracedShadows ? readRayTracingScene(b, bb) : RayTracingSceneHandles{};
+    TextureHandle shadows =
+        rt.valid() ? TextureHandle{} : b.readOptional(bb.texture(channels::ShadowMaps), Access::Sampled);
+    b.condition([traced = rt.valid(), rayTracedShadows] {
+      if (traced) return PassDecision::run("ray-traced shadows (r.RayTracing.Shadows)");
+      return PassDecision::run(rayTracedShadows
+                                   ? "shadow maps (r.RayTracing.Shadows is on, but the frame has no "
+                                     "ray-tracing scene)"
+                                   : "shadow maps");
+    });
     // Whatever GI channels plugins produced; none costs nothing.
     TextureHandle diffuse = b.readOptional(bb.texture(channels::IndirectDiffuse), Access::Sampled);
     TextureHandle specular = b.readOptional(bb.texture(channels::IndirectSpecular), Access::Sampled);
@@ -274,7 +288,9 @@ void DeferredPipeline::lighting(RenderGraph& g, const FrameContext& frame) const
       push.coveredPixelBytes = 0;
       for (TextureHandle t : {base, normal, material, emissive, diffuse, specular, ao})
         if (ctx.available(t)) push.coveredPixelBytes += formatBytesPerTexel(ctx.image(t).format());
-      const gpu::Pipeline& pipeline = ctx.pipelines().compute(shader("lighting.comp"));
+      gpu::ShaderSource source = shader("lighting.comp");
+      if (rt.valid()) source.defines.emplace_back("RAY_TRACED_SHADOWS", "1");
+      const gpu::Pipeline& pipeline = ctx.pipelines().compute(source);
       gpu::Bindings bind;
       bind.texture("gBaseColor", base, gpu::SamplerKind::NearestClamp)
           .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)
@@ -288,6 +304,7 @@ void DeferredPipeline::lighting(RenderGraph& g, const FrameContext& frame) const
           .texture("giAmbientOcclusion", ao, gpu::SamplerKind::NearestClamp)
           .storage("outRadiance", radiance)
           .storage("outDirect", direct);
+      if (rt.valid()) bindRayTracingScene(bind, rt);
       if (ctx.available(shadows))
         bind.texture("shadowMaps", shadows, gpu::SamplerKind::ShadowCompare);
       else

@@ -38,6 +38,9 @@ struct FrameOutputs {
   /// Hand the images back at the size the scene rendered at (the caller scales them, as the
   /// viewer does on the GPU), instead of upscaled to the view's size.
   bool keepRenderResolution = false;
+  /// Where the frame samples its pixels, in render pixels from their centres
+  /// (FrameView::jitter): frames averaged at several offsets cover each pixel's area.
+  glm::vec2 jitter{0.0f};
 };
 
 class DeferredPipeline {

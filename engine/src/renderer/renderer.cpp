@@ -2,6 +2,7 @@
 
 #include "bounce/core/log.h"
 #include "bounce/frame/settling.h"
+#include "bounce/frame/subpixel_samples.h"
 #include "image/image_resample.h"
 
 #include <glm/gtc/packing.hpp>
@@ -66,6 +67,7 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
   const float percent = outputs.screenPercentage > 0.0f ? outputs.screenPercentage
                                                         : engine_.rendererSettings().screenPercentage.get();
   FrameView view = renderView(outputView, percent);
+  if (outputs.jitter != glm::vec2(0.0f)) view.setJitter(outputs.jitter);
   history_.advance(view, engine_.technique());
   RenderedFrame out;
   out.renderWidth = view.width;
@@ -96,6 +98,28 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
   if (outputs.display) want("display");
   for (const std::string& aov : outputs.aovs) want(aov);
   return out;
+}
+
+RenderedFrame Renderer::renderAccumulated(const FrameView& view, FrameOutputs outputs,
+                                          uint64_t firstFrameIndex, uint32_t samples) {
+  const std::vector<glm::vec2> offsets = subpixelOffsets(std::max(samples, 1u));
+  std::map<std::string, std::vector<double>> sums;
+  RenderedFrame frame;
+  for (size_t i = 0; i < offsets.size(); ++i) {
+    outputs.jitter = offsets[i];
+    frame = render(view, outputs, firstFrameIndex + i);
+    if (!frame.gpu.ok()) return frame;
+    for (const auto& [name, image] : frame.images) {
+      std::vector<double>& sum = sums[name];
+      sum.resize(image.pixels.size(), 0.0);  // every frame's image has the same size
+      for (size_t k = 0; k < image.pixels.size(); ++k) sum[k] += image.pixels[k];
+    }
+  }
+  for (auto& [name, image] : frame.images) {
+    const std::vector<double>& sum = sums[name];
+    for (size_t k = 0; k < image.pixels.size(); ++k) image.pixels[k] = float(sum[k] / double(offsets.size()));
+  }
+  return frame;
 }
 
 ImageBuffer Renderer::convert(const std::string& name, const Readback& rb, const FrameView& view) const {

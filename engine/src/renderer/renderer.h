@@ -50,6 +50,14 @@ class Renderer {
   /// Renders the engine's current scene from `view`. Throws std::logic_error without a
   /// scene, gpu::ShaderError / gpu::VulkanError on shader or device failures.
   RenderedFrame render(const FrameView& view, const FrameOutputs& outputs, uint64_t frameIndex);
+  /// Renders `samples` frames of a still view (indices from `firstFrameIndex`), each
+  /// sampling its pixels at one of subpixelOffsets(samples) (bounce/frame/subpixel_samples.h),
+  /// and averages their images: the still-image path of bounce-render --accumulate and
+  /// bounce-bench, antialiased as the path tracer's box-filtered pixels are. The result
+  /// carries the last frame's timings, graph and notes; a frame that fails is returned as
+  /// it is. `outputs.jitter` is replaced.
+  RenderedFrame renderAccumulated(const FrameView& view, FrameOutputs outputs, uint64_t firstFrameIndex,
+                                  uint32_t samples);
 
   gpu::ShaderCompiler& shaders() { return *compiler_; }
   gpu::PipelineCache& pipelines() { return *pipelines_; }

@@ -40,8 +40,8 @@ class DdgiAccuracy : public RenderFixture {
     RenderedFrame ddgi;
     for (int i = 0; i < updates; ++i) ddgi = render(32, 32, {"indirect-irradiance", "radiance", "direct"});
     // 1024 paths per pixel: the reference's own relative RMSE is a few percent.
-    for (const char* line :
-         {"r.Reference.MaxBounces -1", "r.Reference.SamplesPerPixel 1024", "r.GI.Technique Reference"})
+    for (const char* line : {"r.Reference.MaxBounces -1", "r.Reference.SamplesPerPixel 1024",
+                             "r.Reference.PixelFilter Center", "r.GI.Technique Reference"})
       engine->console().execute(line);
     RenderedFrame reference = render(32, 32, {"indirect-irradiance", "radiance", "direct"});
     const ImageBuffer &a = ddgi.images.at("indirect-irradiance"),

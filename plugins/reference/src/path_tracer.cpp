@@ -47,6 +47,9 @@ uint32_t PathTracer::addSamples(Accumulation& acc, const FrameView& view, uint32
   const uint32_t tilesX = (width + kTileSize - 1) / kTileSize;
   const uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
   const PathIntegrator integrator(impl_->scene, settings);
+  FrameView centred = view;
+  centred.setJitter(glm::vec2(0.0f));
+  const bool box = settings.pixelFilter == PixelFilter::Box;
 
   uint32_t added = 0;
   uint64_t droppedNow = 0;
@@ -63,8 +66,10 @@ uint32_t PathTracer::addSamples(Accumulation& acc, const FrameView& view, uint32
             for (uint32_t y = y0; y < std::min(y0 + kTileSize, height); ++y) {
               for (uint32_t x = x0; x < std::min(x0 + kTileSize, width); ++x) {
                 const uint32_t pixel = y * width + x;
-                const PathEstimate e =
-                    integrator.estimate(cameraRay(view, x, y, width, height), pixel, sampleIndex, localRays);
+                const glm::vec2 offset =
+                    box ? pixelFootprintOffset(pixel, sampleIndex, settings.seed) : glm::vec2(0.0f);
+                const PathEstimate e = integrator.estimate(cameraRay(centred, x, y, width, height, offset),
+                                                           pixel, sampleIndex, localRays);
                 if (!e.finite()) {
                   ++localDropped;  // never reaches the sums
                   continue;

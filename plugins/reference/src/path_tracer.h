@@ -4,8 +4,9 @@
 // (glTF metallic-roughness + KHR_materials_specular; Lambert at specular 0), the light
 // model of bounce/shaders/bounce/lights.glsl (radiometric units), next-event estimation
 // for punctual lights and emissive triangles with MIS, and the same camera and pixels
-// as bounce-render (one ray through each pixel centre, so every sample sees the same
-// surface point the G-buffer does).
+// as bounce-render: samples spread over each pixel's square (PixelFilter::Box, the image
+// `bounce-render --accumulate` converges to) or all through its centre
+// (PixelFilter::Center, the very surface point one raster frame's G-buffer holds).
 //
 // Output decomposition (matches the rasterizer's AOVs, so GI plugins can be compared):
 //   direct               emission seen at the primary hit + punctual lights' direct
@@ -30,6 +31,7 @@
 #include "bounce/frame/frame_context.h"
 #include "bounce/image/image_buffer.h"
 #include "bounce/scene/scene.h"
+#include "camera_ray.h"
 
 #include <glm/glm.hpp>
 
@@ -45,6 +47,10 @@ namespace bounce::reference {
 struct PathTracerSettings {
   int32_t maxBounces = -1;  ///< -1: unlimited
   uint32_t seed = 1;        ///< the same seed and sample count give the same image
+  /// Centre by default here, where tests compare pixels with closed forms at their centres;
+  /// the plugin's r.Reference.PixelFilter defaults to Box, the antialiased image users see.
+  PixelFilter pixelFilter = PixelFilter::Center;
+  bool operator==(const PathTracerSettings&) const = default;
 };
 
 /// Per-pixel running sums of one view; samples accumulate across addSamples calls.
@@ -84,7 +90,8 @@ class PathTracer {
   PathTracer(const PathTracer&) = delete;
   PathTracer& operator=(const PathTracer&) = delete;
 
-  /// Adds `samplesPerPixel` samples to every pixel of `accumulation` for `view`.
+  /// Adds `samplesPerPixel` samples to every pixel of `accumulation` for `view` (its
+  /// jitter, if any, is ignored: the pixel filter places the samples).
   /// `progress` (optional) is called from one thread with the fraction done and may
   /// return false to stop early (the samples completed for every pixel still count,
   /// whole passes only). Returns the number of samples per pixel actually added.

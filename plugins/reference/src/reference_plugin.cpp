@@ -88,6 +88,15 @@ class ReferencePlugin final : public Plugin {
                               .help = "Random sequence; the same seed and sample count give the same image.",
                               .min = 0,
                               .category = "Reference"});
+    pixelFilter_ = ctx.addCVar<int32_t>(
+        {.name = "r.Reference.PixelFilter",
+         .defaultValue = 0,
+         .help = "Where samples fall in their pixel: Box spreads them over its square (an antialiased image, "
+                 "what bounce-render --accumulate converges to); Center sends all through its centre, the "
+                 "surface point one raster frame samples (compare a single frame with this).",
+         .enumNames = {"Box", "Center"},
+         .ini = {"Reference", "PixelFilter"},
+         .category = "Reference"});
     progressive_ = ctx.addCVar<bool>(
         {.name = "r.Reference.Progressive",
          .defaultValue = true,
@@ -130,15 +139,17 @@ class ReferencePlugin final : public Plugin {
       sceneRevision_ = frame.scene.revision();
       accumulation_.reset();
     }
-    PathTracerSettings settings{.maxBounces = bounces_.get(), .seed = uint32_t(seed_.get())};
+    const PathTracerSettings settings{
+        .maxBounces = bounces_.get(),
+        .seed = uint32_t(seed_.get()),
+        .pixelFilter = pixelFilter_.get() == 1 ? PixelFilter::Center : PixelFilter::Box};
     const uint32_t target = uint32_t(samples_.get());
     const bool sameView = accumulation_ && accumulation_->width() == frame.view.width &&
                           accumulation_->height() == frame.view.height &&
-                          viewProjection_ == frame.view.viewProjection;
-    if (!sameView || !progressive_.get() || settings.maxBounces != settings_.maxBounces ||
-        settings.seed != settings_.seed || accumulation_->samples() > target) {
+                          viewProjection_ == frame.view.unjitteredViewProjection;
+    if (!sameView || !progressive_.get() || !(settings == settings_) || accumulation_->samples() > target) {
       accumulation_ = std::make_unique<Accumulation>(frame.view.width, frame.view.height);
-      viewProjection_ = frame.view.viewProjection;
+      viewProjection_ = frame.view.unjitteredViewProjection;
       settings_ = settings;
     }
     if (accumulation_->samples() < target) addSamples(frame, target);
@@ -218,7 +229,7 @@ class ReferencePlugin final : public Plugin {
     });
   }
 
-  CVarRef<int32_t> samples_, bounces_, seed_;
+  CVarRef<int32_t> samples_, bounces_, seed_, pixelFilter_;
   CVarRef<float> budget_;
   CVarRef<bool> progressive_;
   CVarRef<bool> progressBar_;

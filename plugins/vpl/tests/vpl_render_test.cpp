@@ -183,8 +183,8 @@ TEST_F(VplRender, LitSphereFollowsTheGeometricSeriesAndTheReference) {
     for (int k = 1; k <= bounces; ++k) series += std::pow(rho, k);  // × E0 = 1
     const Range r = rangeOf(e);
     const double mean = meanRgb(e);
-    for (const char* line :
-         {"r.Reference.SamplesPerPixel 16", "r.Reference.ShowProgress 0", "r.GI.Technique Reference"})
+    for (const char* line : {"r.Reference.SamplesPerPixel 16", "r.Reference.ShowProgress 0",
+                             "r.Reference.PixelFilter Center", "r.GI.Technique Reference"})
       engine->console().execute(line);
     engine->console().execute(fmt::format("r.Reference.MaxBounces {}", bounces));
     const double reference =
@@ -234,8 +234,8 @@ TEST_F(VplRender, WhiteFurnaceFollowsTheGeometricSeriesAndTheReference) {
     engine->console().execute("r.VPL.Merge 1");
     engine->console().execute("r.VPL.Clamp 0.5");
     const double merged = meanRgb(render(32, 32, {"indirect-irradiance"}).images.at("indirect-irradiance"));
-    for (const char* line :
-         {"r.Reference.SamplesPerPixel 16", "r.Reference.ShowProgress 0", "r.GI.Technique Reference"})
+    for (const char* line : {"r.Reference.SamplesPerPixel 16", "r.Reference.ShowProgress 0",
+                             "r.Reference.PixelFilter Center", "r.GI.Technique Reference"})
       engine->console().execute(line);
     engine->console().execute(fmt::format("r.Reference.MaxBounces {}", bounces));
     const double reference =
@@ -283,8 +283,9 @@ TEST_F(VplRender, CornellBoxAgainstTheReferenceAndWhatTheClampCosts) {
   engine->console().execute("r.VPL.Merge 0");
   engine->console().execute("r.VPL.Clamp 0");
   const double unmerged = mean();
-  for (const char* line : {"r.Reference.SamplesPerPixel 64", "r.Reference.ShowProgress 0",
-                           "r.Reference.MaxBounces 1", "r.GI.Technique Reference"})
+  for (const char* line :
+       {"r.Reference.SamplesPerPixel 64", "r.Reference.ShowProgress 0", "r.Reference.MaxBounces 1",
+        "r.Reference.PixelFilter Center", "r.GI.Technique Reference"})
     engine->console().execute(line);
   const double reference = mean();
   std::printf(
@@ -333,8 +334,8 @@ TEST_F(VplRender, SunlitRoomAgainstTheReference) {
     start("content/tests/sunlit_room.gltf",
           {"r.VPL.LightPaths=4096", fmt::format("r.VPL.Bounces={}", bounces), "r.Bloom.Intensity=0"}, "VPL");
     const double vpl = meanRgb(render(32, 32, {"indirect-irradiance"}).images.at("indirect-irradiance"));
-    for (const char* line :
-         {"r.Reference.SamplesPerPixel 64", "r.Reference.ShowProgress 0", "r.GI.Technique Reference"})
+    for (const char* line : {"r.Reference.SamplesPerPixel 64", "r.Reference.ShowProgress 0",
+                             "r.Reference.PixelFilter Center", "r.GI.Technique Reference"})
       engine->console().execute(line);
     engine->console().execute(fmt::format("r.Reference.MaxBounces {}", bounces));
     const double reference =

@@ -13,6 +13,8 @@ TemporalHistory::Frame TemporalHistory::begin(RenderGraph& graph, const FrameVie
   const uint32_t phases = sparsity * sparsity;
   Frame f;
   f.phase = value.framesAccumulated % phases;
+  f.phases = phases;
+  f.framesAccumulated = value.valid && surface.valid ? value.framesAccumulated : 0;
   f.constants.previousViewProjection = value.previousViewProjection;
   f.constants.previousCamera = glm::vec4(value.previousPosition, 1.0f);
   f.constants.state = glm::ivec4(int32_t(f.phase), value.valid && surface.valid ? 1 : 0, 0, 0);

@@ -34,6 +34,10 @@ class TemporalHistory {
     TextureHandle readValue, readSurface, writeValue, writeSurface;
     TemporalConstants constants{};
     uint32_t phase = 0;
+    uint32_t phases = 1;             ///< k²: frames until every pixel has been traced exactly
+    uint32_t framesAccumulated = 0;  ///< frames in the history before this one
+    /// After this frame every pixel holds a value traced exactly at it.
+    bool complete() const { return framesAccumulated + 1 >= phases; }
   };
 
   /// Prepares the frame for a view of `view`'s size traced every `sparsity`-th pixel;

@@ -1,5 +1,6 @@
 #include "vxgi_passes.h"
 
+#include <bounce/frame/settling.h>
 #include <bounce/gpu/barriers.h>
 #include <bounce/gpu/pass_context.h>
 #include <bounce/graph/channels.h>
@@ -95,6 +96,13 @@ void addTracingPasses(RenderGraph& graph, const FrameContext& frame, const VxgiS
     mix(push.sizes.w);
     temporal = history->begin(graph, frame.view, uint32_t(sparsity), key.value(), voxelsChanged);
     push.extra.w = float(temporal->phase);
+    // Until every phase has been traced, some pixels hold interpolated light: a still
+    // image (bounce-render, the bench) waits for the k² frames.
+    if (!temporal->complete())
+      noteSettling(
+          graph, fmt::format("VXGI: sparse diffuse tracing fills its history: frame {} of {} "
+                             "(r.VXGI.DiffuseSparsity {}: every pixel traced after {} frames)",
+                             temporal->framesAccumulated + 1, temporal->phases, sparsity, temporal->phases));
   }
   const bool diffuseOn = s.diffuseEnable.get();
   const VkFormat diffuseFormat = ao ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT;

@@ -207,7 +207,8 @@ TEST_F(VxgiHardCases, EmitterSmallerThanAVoxelLightsTheFloorBelow) {
   // tracer's floor then sees the cube alone): measured under the cube 4.36 W/m², in the
   // far corner 3.10.
   start("content/tests/small_emitter_black_room.gltf", kSmall, "Reference");
-  for (const char* line : {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 4096"})
+  for (const char* line :
+       {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 4096", "r.Reference.PixelFilter Center"})
     engine->console().execute(line);
   RenderedFrame truth = render(32, 32, {"indirect-irradiance"});
   // The camera looks down from 0.3 m beside the cube: the floor under the cube is

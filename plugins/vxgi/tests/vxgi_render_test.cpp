@@ -262,8 +262,8 @@ TEST_F(VxgiRender, CornellBoxIndirectLightMatchesAOneBouncePathTracer) {
   start("content/cornell_box.gltf", with(kSmall, {"r.VXGI.MapSize=64", "r.VXGI.DiffuseSparsity=1"}), "VXGI");
   RenderedFrame vxgi = render(32, 32, {"indirect-irradiance"});
   // 2048 paths per pixel: the reference's own noise over the regions below is < 3%.
-  for (const char* line :
-       {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 2048", "r.GI.Technique Reference"})
+  for (const char* line : {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 2048",
+                           "r.Reference.PixelFilter Center", "r.GI.Technique Reference"})
     engine->console().execute(line);
   RenderedFrame reference = render(32, 32, {"indirect-irradiance"});
   const ImageBuffer &a = vxgi.images.at("indirect-irradiance"),
@@ -496,8 +496,8 @@ TEST_F(VxgiRender, WallAboveALitFloorAgainstTheViewFactor) {
                                          "r.VXGI.DiffuseSparsity=1"};
   start("content/tests/lit_floor_and_wall.gltf", with(kSmall, sets), "VXGI");
   RenderedFrame vxgi = render(kSize, kSize, {"indirect-irradiance"});
-  for (const char* line :
-       {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 1024", "r.GI.Technique Reference"})
+  for (const char* line : {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 1024",
+                           "r.Reference.PixelFilter Center", "r.GI.Technique Reference"})
     engine->console().execute(line);
   RenderedFrame reference = render(kSize, kSize, {"indirect-irradiance"});
   const ImageBuffer &a = vxgi.images.at("indirect-irradiance"),

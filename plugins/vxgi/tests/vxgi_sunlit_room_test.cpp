@@ -60,8 +60,8 @@ WallLight VxgiSunlitRoom::measure(const std::string& scene, const std::vector<st
   WallLight w;
   t.start(scene, with(kSmall, with({"r.VXGI.DiffuseSparsity=1"}, sets)), "VXGI");
   RenderedFrame vxgi = t.render(64, 64, {"indirect-irradiance"});
-  for (const char* line :
-       {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 2048", "r.GI.Technique Reference"})
+  for (const char* line : {"r.Reference.MaxBounces 1", "r.Reference.SamplesPerPixel 2048",
+                           "r.Reference.PixelFilter Center", "r.GI.Technique Reference"})
     t.engine->console().execute(line);
   RenderedFrame reference = t.render(64, 64, {"indirect-irradiance", "normal"});
   // Every bounce, at 512 paths per pixel: its bound below has a margin of a third or more.

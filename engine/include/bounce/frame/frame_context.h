@@ -32,6 +32,14 @@ struct FrameView {
   /// it, so the image it converges to does not depend on the render's size.
   float renderScale = 1.0f;
 
+  /// Where this frame samples its pixels, in render pixels from their centres (each
+  /// component in [-0.5, 0.5]); `projection`, `viewProjection` and its inverse include the
+  /// shift. Frames averaged at several offsets cover each pixel's area, as the path tracer's
+  /// samples do (bounce-render --accumulate). (0, 0): pixel centres.
+  glm::vec2 jitter{0.0f};
+  /// `viewProjection` without the jitter: what stays the same while the camera does.
+  glm::mat4 unjitteredViewProjection{1.0f};
+
   /// The previous frame's view-projection and camera position (motion vectors,
   /// reprojecting a history), and whether anything kept from that frame may be reused:
   /// false on the first frame, after a camera cut (Renderer::cutHistory), a resize, a new
@@ -41,6 +49,9 @@ struct FrameView {
   bool historyValid = false;
 
   static FrameView fromCamera(const Camera& camera, uint32_t width, uint32_t height);
+  /// Moves the pixel sampling positions by `pixels` (see `jitter`), replacing any earlier
+  /// jitter; non-finite offsets count as 0 and each component is clamped to [-0.5, 0.5].
+  void setJitter(glm::vec2 pixels);
 };
 
 struct FrameContext {

@@ -18,13 +18,14 @@ class ViewHistory {
   void advance(FrameView& view, std::string_view technique);
   /// The next frame starts without history: a camera cut, a new scene.
   void cut() { cut_ = true; }
-  /// Whether the last advance() moved the camera (view-projection or position changed);
-  /// false on a first frame.
+  /// Whether the last advance() moved the camera (its unjittered view-projection or its
+  /// position changed); false on a first frame.
   bool cameraMoved() const { return moved_; }
 
  private:
   struct Last {
     glm::mat4 viewProjection;
+    glm::mat4 unjitteredViewProjection;
     glm::vec3 position;
     uint32_t width, height;
     std::string technique;

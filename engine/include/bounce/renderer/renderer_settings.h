@@ -29,6 +29,10 @@ struct RendererSettings {
   /// r.Shadow.CacheStaticMaps: keep shadow maps from frame to frame while the geometry,
   /// transforms and shadow matrices stay the same.
   CVarRef<bool> cacheShadowMaps;
+  /// r.RayTracing.Shadows: the lighting pass tests each light's visibility with one shadow
+  /// ray per pixel through the scene's ray tracing instead of its shadow map (Unreal's
+  /// name; ini [/Script/Engine.RendererSettings], post-process "RayTracingShadows").
+  CVarRef<bool> rayTracedShadows;
 };
 
 /// How scene ray tracing runs (r.RayTracing.Backend resolved against the device).

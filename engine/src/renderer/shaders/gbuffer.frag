@@ -1,6 +1,7 @@
 #version 460
 // Writes the G-buffer (see bounce/gbuffer.glsl for the layout).
 #include "bounce/common.glsl"
+#include "bounce/gbuffer.glsl"
 #include "bounce/scene.glsl"
 
 SCENE_INSTANCES(0)
@@ -29,11 +30,13 @@ void main() {
   float metallic = saturate(m.metallic * mr.x);
   float roughness = saturate(m.roughness * mr.y);
 
-  // The face's own normal: the fallback for degenerate vertex normals, and the side to
-  // shade for double-sided materials seen from behind.
-  vec3 faceNormal = safeNormalize(cross(dFdx(inWorldPosition), dFdy(inWorldPosition)), vec3(0.0, 1.0, 0.0));
-  vec3 N = safeNormalize(inNormal, faceNormal);
-  if (!gl_FrontFacing) N = -N;
+  // The face's own normal, facing the camera: the geometric normal the lighting pass
+  // offsets shadow rays along, and the fallback for degenerate vertex normals. Framebuffer
+  // x runs right and y down while the view looks into the screen, so cross(dP/dx, dP/dy)
+  // points away from the camera on every visible surface; negated, it faces it. The
+  // vertex normal is flipped for a back face (a double-sided material seen from behind).
+  vec3 faceNormal = safeNormalize(-cross(dFdx(inWorldPosition), dFdy(inWorldPosition)), vec3(0.0, 1.0, 0.0));
+  vec3 N = safeNormalize(gl_FrontFacing ? inNormal : -inNormal, faceNormal);
   if (m.textures0.z >= 0) {
     vec3 T = inTangent.xyz - N * dot(N, inTangent.xyz);
     if (dot(T, T) > 1e-12 && inTangent.w != 0.0) {
@@ -48,6 +51,6 @@ void main() {
 
   outBaseColor = vec4(saturate(base.rgb), 1.0);
   outNormalRoughness = vec4(N, roughness);
-  outMaterial = vec4(metallic, saturate(m.specular.a), 0.0, 1.0);
+  outMaterial = vec4(metallic, saturate(m.specular.a), encodeOctahedral(faceNormal));
   outEmissive = vec4(sanitize(emission, HALF_MAX), 1.0);
 }

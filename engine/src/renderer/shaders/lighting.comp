@@ -1,8 +1,9 @@
 #version 460
 // Deferred lighting and GI composite: direct light from every punctual light with its
-// shadow map, emission, and whatever GI channels plugins produced (missing channels
-// read as black and their flag is off). Writes the final HDR radiance and, separately,
-// the direct part (emission + direct lighting) for the `direct` AOV.
+// shadow map, or with a shadow ray when compiled with RAY_TRACED_SHADOWS
+// (r.RayTracing.Shadows), emission, and whatever GI channels plugins produced (missing
+// channels read as black and their flag is off). Writes the final HDR radiance and,
+// separately, the direct part (emission + direct lighting) for the `direct` AOV.
 #include "bounce/brdf.glsl"
 #include "bounce/gbuffer.glsl"
 #include "bounce/lights.glsl"
@@ -26,6 +27,10 @@ layout(binding = 11, rgba16f) uniform writeonly image2D outRadiance;
 layout(binding = 12, rgba16f) uniform writeonly image2D outDirect;
 
 #include "bounce/shadows.glsl"
+#ifdef RAY_TRACED_SHADOWS
+#define RAY_TRACING_BINDING 14
+#include "bounce/ray_tracing.glsl"
+#endif
 
 const uint HAS_DIFFUSE = 1u, HAS_SPECULAR = 2u, HAS_AO = 4u, HAS_SHADOWS = 8u;
 
@@ -38,6 +43,44 @@ layout(push_constant) uniform Push {
   uvec2 size;
   uint coveredPixelBytes;  // G-buffer and GI texels a covered pixel reads beyond its depth
 } pc;
+
+#ifdef RAY_TRACED_SHADOWS
+// How far a shadow ray starts off the surface, along its geometric normal. The point is
+// rebuilt from a 32-bit depth, which the rasterizer rounds and interpolates, through the
+// float inverse of a (jittered) view-projection: together they err by several units in
+// the last place of depth. Sixteen of them, measured in metres at this very pixel (far
+// from the camera a unit spans centimetres, near it micrometres), cover that: with four,
+// a sample on the Cornell box's tall box at 32² (jittered) hit its own face at t = 1.3e-5
+// and read as shadowed, while the same point at 128² was lit; with 16 no test sees a
+// self-hit and 64 changes no pixel further (tests/render/accumulated_still_test.cpp). At least
+// 2^-16 of the coordinates, the offset the path tracer and bounce/ray_tracing.glsl use at
+// exact hit points, above the rounding of the reconstruction itself.
+float shadowRayOffset(vec3 P, vec2 uv, float depth) {
+  // Below 1, which is infinitely far (the last float under 1 is 0x3F7FFFFF).
+  float nextDepth = min(uintBitsToFloat(floatBitsToUint(depth) + 16u), uintBitsToFloat(0x3F7FFFFFu));
+  float depthError = distance(worldPositionFromDepth(uv, nextDepth, pc.inverseViewProjection), P);
+  if (!(depthError < 1e30)) depthError = 0.0;  // NaN or infinite: the relative floor below
+  vec3 a = abs(P);
+  return max(depthError, max(max(a.x, max(a.y, a.z)) * 1.52587890625e-05, 1e-6));
+}
+
+// 1 when nothing lies between `origin` (already off the surface) and the light, else 0:
+// the path tracer's test for punctual lights. A light below the geometric surface is
+// behind the surface itself (only a bent shading normal sees it). A ray to a point light
+// stops short of it by the light's own offset, so a bulb on a ceiling is not shadowed by
+// that ceiling.
+float rayTracedVisibility(Light light, vec3 origin, vec3 Ng, vec3 L, inout uint rays) {
+  if (dot(Ng, L) <= 0.0) return 0.0;
+  ++rays;
+  if (uint(light.directionType.w + 0.5) == LIGHT_DIRECTIONAL) return traceAnyHit(origin, L, 0.0, 1e30) ? 0.0 : 1.0;
+  vec3 toLight = light.positionRange.xyz - origin;
+  float d = length(toLight);
+  vec3 a = abs(light.positionRange.xyz);
+  float tMax = d - max(max(a.x, max(a.y, a.z)) * 1.52587890625e-05, 1e-7);
+  if (!(tMax > 0.0)) return 1.0;  // the light is within its offset of the surface (or NaN)
+  return traceAnyHit(origin, toLight / d, 0.0, tMax) ? 0.0 : 1.0;
+}
+#endif
 
 void main() {
   uvec2 p = gl_GlobalInvocationID.xy;
@@ -59,8 +102,13 @@ void main() {
   m.roughness = nr.w;
   m.specularFactor = mat.g;
   vec3 N = safeNormalize(nr.xyz, vec3(0.0, 1.0, 0.0));
+  vec3 Ng = decodeGeometricNormal(mat);
   vec3 V = safeNormalize(pc.cameraPosition.xyz - P, N);
   float NdotV = max(dot(N, V), 1e-4);
+#ifdef RAY_TRACED_SHADOWS
+  vec3 origin = P + Ng * shadowRayOffset(P, uv, depth);
+  uint rays = 0u;
+#endif
 
   vec3 direct = texelFetch(gEmissive, ivec2(p), 0).rgb;
   for (uint i = 0u; i < pc.lightCount; ++i) {
@@ -69,9 +117,20 @@ void main() {
     float dist;
     lightIncidence(light, P, L, E, dist);
     if (dot(N, L) <= 0.0 || all(equal(E, vec3(0.0)))) continue;
-    float visibility = (pc.flags & HAS_SHADOWS) != 0u ? shadowFactor(light, P, N, L, shadowMaps) : 1.0;
+    float visibility = 1.0;
+    if (int(light.intensity.w) >= 0) {  // the light casts shadows
+#ifdef RAY_TRACED_SHADOWS
+      visibility = rayTracedVisibility(light, origin, Ng, L, rays);
+#else
+      if ((pc.flags & HAS_SHADOWS) != 0u) visibility = shadowFactor(light, P, Ng, L, shadowMaps);
+#endif
+    }
     direct += evaluateBrdfCos(m, N, V, L) * E * visibility;
   }
+
+#ifdef RAY_TRACED_SHADOWS
+  countWork(WORK_RAYS, rays);
+#endif
 
   vec3 indirect = vec3(0.0);
   float ao = (pc.flags & HAS_AO) != 0u ? saturate(texelFetch(giAmbientOcclusion, ivec2(p), 0).r) : 1.0;

@@ -1,0 +1,27 @@
+# bounce-bench's command line refuses what it cannot measure before rendering anything:
+# each case must exit 2 (bad input) with one line naming the option. A shell wrapper
+# checks the status, since ctest alone can only tell zero from non-zero.
+if(TARGET bounce-bench)
+  set(cases
+      "accumulate_zero|--accumulate|--accumulate 0"
+      "accumulate_huge|--accumulate|--accumulate 100000"
+      "reference_budget_zero|--reference-budget|--reference-budget 0"
+      "reference_budget_negative|--reference-budget|--reference-budget -5"
+      "reference_budget_nan|--reference-budget|--reference-budget nan"
+      "reference_spp_one|--reference-spp|--reference-spp 1"
+      "scene_missing|does-not-exist.gltf|--scene ${PROJECT_SOURCE_DIR}/content/does-not-exist.gltf"
+      "scene_directory|not a regular file|--scene ${PROJECT_SOURCE_DIR}/content"
+      "technique_unknown|NoSuchGI|--techniques NoSuchGI")
+  foreach(case ${cases})
+    string(REPLACE "|" ";" parts "${case}")
+    list(GET parts 0 name)
+    list(GET parts 1 must_say)
+    list(GET parts 2 arguments)
+    add_test(NAME bench_cli.${name}
+             COMMAND sh -c "out=$($<TARGET_FILE:bounce-bench> --width 8 --height 8 ${arguments} 2>&1); s=$?; \
+echo \"$out\"; [ $s -eq 2 ] && printf '%s' \"$out\" | grep -qF -- '${must_say}'")
+    set_tests_properties(bench_cli.${name} PROPERTIES
+      ENVIRONMENT "BOUNCE_ROOT=${PROJECT_SOURCE_DIR};BOUNCE_SHADER_CACHE=${PROJECT_BINARY_DIR}/shader-cache"
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} LABELS bench-cli TIMEOUT 120)
+  endforeach()
+endif()

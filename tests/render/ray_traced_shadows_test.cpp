@@ -1,0 +1,149 @@
+// r.RayTracing.Shadows: the lighting pass's shadow rays against the path tracer's
+// (Embree's occlusion, from the same pixel centres: r.Reference.PixelFilter Center), and
+// against closed form; and what a frame builds for them.
+//
+// The path tracer's direct light from punctual lights has no noise (one shadow ray per
+// light, no random numbers), so one sample per pixel is exact and the comparison is
+// pixel for pixel. What may differ: the G-buffer's 8-bit sRGB base colour (half a step is
+// 1.7% of a linear 0.065, the Cornell box's darkest channel; the path tracer's is
+// exact), RGBA16F storage (0.05%), the depth-rebuilt point (a few units in the last place)
+// and each side's ray offset, which decide pixels whose centre lies within rounding of a
+// shadow's edge. Tolerance 2% of a pixel's luminance, with at most 0.5% of the pixels
+// allowed to differ more or to be shadowed on one side only (edges).
+
+#include "render_fixture.h"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace bounce::test {
+namespace {
+
+constexpr float kAlbedo = 0.5f;
+
+struct Disagreement {
+  size_t pixels = 0;  ///< compared
+  size_t differ = 0;  ///< luminance off by more than 2% (and 1e-4 W/(m²·sr)), or shadowed on one side only
+  size_t shadowed = 0;  ///< black in the path tracer's image
+};
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+Disagreement disagreement(const ImageBuffer& image, const ImageBuffer& reference) {
+  Disagreement d;
+  for (uint32_t y = 0; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) {
+      const float a = luminance(image.rgb(x, y)), b = luminance(reference.rgb(x, y));
+      ++d.pixels;
+      if (b <= 0.0f) ++d.shadowed;
+      if ((a <= 0.0f) != (b <= 0.0f) || std::abs(a - b) > 0.02f * std::abs(b) + 1e-4f) ++d.differ;
+    }
+  return d;
+}
+
+class RayTracedShadows : public RenderFixture {
+ protected:
+  /// The direct AOV with ray-traced shadows, then the path tracer's from the same pixel
+  /// centres, at size × size.
+  std::pair<ImageBuffer, ImageBuffer> directAndReference(const std::string& scene, uint32_t size,
+                                                         const Camera* camera = nullptr) {
+    start(scene, {"r.RayTracing.Shadows=1"});
+    const FrameView v = camera ? FrameView::fromCamera(*camera, size, size) : view(size, size);
+    ImageBuffer traced = render(v, {"direct"}).images.at("direct");
+    for (const char* line :
+         {"r.Reference.SamplesPerPixel 1", "r.Reference.PixelFilter Center", "r.Reference.MaxBounces 0",
+          "r.Reference.ShowProgress 0", "r.GI.Technique Reference"})
+      engine->console().execute(line);
+    ImageBuffer reference = render(v, {"direct"}).images.at("direct");
+    return {std::move(traced), std::move(reference)};
+  }
+
+  static const CompiledPass& pass(const RenderedFrame& f, const std::string& name) {
+    for (const CompiledPass& p : f.graph.passes)
+      if (p.name == name) return p;
+    throw std::runtime_error("no pass " + name);
+  }
+};
+
+TEST_F(RayTracedShadows, PointLightShadowMatchesEmbreePixelForPixelAndClosedForm) {
+  // Looking straight down from 3 m with a 1.4 rad field of view: the whole 4 m plane, the
+  // occluder's 2 m shadow on it and the lit ring around that.
+  Camera top;
+  top.yfov = 1.4f;
+  top.world = glm::translate(glm::mat4(1.0f), {0.0f, 3.0f, 0.0f}) *
+              glm::rotate(glm::mat4(1.0f), -0.5f * glm::pi<float>(), {1.0f, 0.0f, 0.0f});
+  const auto [traced, reference] = directAndReference("content/tests/shadowed_plane_point.gltf", 64, &top);
+  const Disagreement d = disagreement(traced, reference);
+  std::printf("point light over an occluder: %zu of %zu pixels differ, %zu shadowed\n", d.differ, d.pixels,
+              d.shadowed);
+  EXPECT_GT(d.shadowed, 200u) << "the occluder's shadow should be in view";
+  EXPECT_LE(double(d.differ), 0.005 * double(d.pixels));
+  // The plane outside the shadow, closed form: ρ I cos θ / (π r²), I = 4 W/sr at (0, 1, 0).
+  const FrameView v = FrameView::fromCamera(top, 64, 64);
+  size_t lit = 0;
+  for (uint32_t y = 0; y < 64; ++y)
+    for (uint32_t x = 0; x < 64; ++x) {
+      const glm::vec2 ndc((float(x) + 0.5f) / 32.0f - 1.0f, (float(y) + 0.5f) / 32.0f - 1.0f);
+      const glm::vec4 a = v.inverseViewProjection * glm::vec4(ndc, 0.0f, 1.0f);
+      const glm::vec4 b = v.inverseViewProjection * glm::vec4(ndc, 0.5f, 1.0f);
+      const glm::vec3 o = glm::vec3(a) / a.w, dir = glm::normalize(glm::vec3(b) / b.w - o);
+      const glm::vec3 p = o + (-o.y / dir.y) * dir;
+      const float m = std::max(std::abs(p.x), std::abs(p.z));
+      if (m < 1.05f || m > 1.95f) continue;  // the shadow reaches 1 m; the plane ends at 2 m
+      const glm::vec3 toLight = glm::vec3(0.0f, 1.0f, 0.0f) - p;
+      const float r2 = glm::dot(toLight, toLight);
+      const float expected = kAlbedo * 4.0f * (toLight.y / std::sqrt(r2)) / (glm::pi<float>() * r2);
+      EXPECT_NEAR(traced.at(x, y, 0), expected, 0.01f * expected) << x << "," << y;
+      ++lit;
+    }
+  EXPECT_GT(lit, 1000u);
+}
+
+TEST_F(RayTracedShadows, SunThroughAWindowMatchesEmbreeWhereTheShadowMapBlurs) {
+  const auto [traced, reference] = directAndReference("content/tests/sunlit_room.gltf", 128);
+  const Disagreement d = disagreement(traced, reference);
+  const ImageErrorStats e = compareImages(traced, reference);
+  std::printf("sun through a window: %zu of %zu pixels differ; relative RMSE %.4f\n", d.differ, d.pixels,
+              e.relativeRmse);
+  EXPECT_GT(d.shadowed, 2000u);
+  EXPECT_LE(double(d.differ), 0.005 * double(d.pixels));
+  // The shadow map's filter ramp reads 0.31 here (RenderOutputs.ShadowEdgesStay...).
+  EXPECT_LT(e.relativeRmse, 0.05);
+}
+
+TEST_F(RayTracedShadows, CornellBoxMatchesEmbreeOnCurvedAndFlatSurfaces) {
+  // The sphere's interpolated normals bend away from its triangles at the terminator:
+  // the geometric normal in the G-buffer decides which side the light is on.
+  const auto [traced, reference] = directAndReference("content/cornell_box.gltf", 128);
+  const Disagreement d = disagreement(traced, reference);
+  std::printf("Cornell box: %zu of %zu pixels differ\n", d.differ, d.pixels);
+  EXPECT_GT(d.shadowed, 100u);
+  EXPECT_LE(double(d.differ), 0.005 * double(d.pixels));
+  EXPECT_EQ(traced.nonFiniteCount(), 0u);
+}
+
+TEST_F(RayTracedShadows, TheFrameTracesInsteadOfDrawingShadowMaps) {
+  start("content/cornell_box.gltf");
+  const RenderedFrame maps = render(32, 32, {"radiance"});
+  EXPECT_TRUE(pass(maps, "ShadowMaps").executed);
+  EXPECT_FALSE(pass(maps, "RayTracingScene").executed) << "no pass traces rays: no BVH";
+  engine->console().execute("r.RayTracing.Shadows 1");
+  const RenderedFrame rays = render(32, 32, {"radiance"});
+  EXPECT_TRUE(pass(rays, "RayTracingScene").executed);
+  EXPECT_FALSE(pass(rays, "ShadowMaps").executed) << "nobody reads the maps";
+  EXPECT_NE(pass(rays, "Lighting").reason.find("ray-traced"), std::string::npos)
+      << pass(rays, "Lighting").reason;
+  // Not 7, not "maybe": the value is refused and the setting stays on.
+  EXPECT_FALSE(engine->console().execute("r.RayTracing.Shadows 7").ok);
+  EXPECT_FALSE(engine->console().execute("r.RayTracing.Shadows maybe").ok);
+  EXPECT_TRUE(engine->cvars().find("r.RayTracing.Shadows")->getBool());
+  // Unreal's ini key for it.
+  EXPECT_EQ(engine->cvars().findByIni("/Script/Engine.RendererSettings", "r.RayTracing.Shadows"),
+            engine->cvars().find("r.RayTracing.Shadows"));
+}
+
+}  // namespace
+}  // namespace bounce::test
