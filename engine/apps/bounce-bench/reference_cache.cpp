@@ -26,8 +26,9 @@ fs::path defaultReferenceCache() {
 namespace {
 
 // FNV-1a over everything that determines the image. The path tracer's own sources are
-// not hashed: bump kVersion when its output changes (v2: box-filtered pixels, direct AOV).
-constexpr const char* kVersion = "reference-v2";
+// not hashed: bump kVersion when its output changes (v2: box-filtered pixels, direct AOV;
+// v3: camera rays pass single-sided back faces, as the rasterizer culls them).
+constexpr const char* kVersion = "reference-v3";
 
 uint64_t fnv1a(std::string_view bytes, uint64_t h = 1469598103934665603ull) {
   for (unsigned char c : bytes) {

@@ -5,6 +5,16 @@
 
 namespace bounce {
 
+namespace {
+
+// The inverse of a view-projection, computed in double: a float inverse of a projection
+// with a small near plane (0.01 m, far 1000: the breakfast room's) errs by more than the
+// depth buffer's own rounding, and every pass that rebuilds world positions from depth
+// (ray-traced shadows start their rays a few depth units off the surface) inherits it.
+glm::mat4 preciseInverse(const glm::mat4& m) { return glm::mat4(glm::inverse(glm::dmat4(m))); }
+
+}  // namespace
+
 FrameView FrameView::fromCamera(const Camera& camera, uint32_t width, uint32_t height) {
   FrameView v;
   v.width = std::max(1u, width);
@@ -27,7 +37,7 @@ FrameView FrameView::fromCamera(const Camera& camera, uint32_t width, uint32_t h
   v.view = camera.view();
   v.projection = v.camera.projection(output);
   v.viewProjection = v.projection * v.view;
-  v.inverseViewProjection = glm::inverse(v.viewProjection);
+  v.inverseViewProjection = preciseInverse(v.viewProjection);
   v.unjitteredViewProjection = v.viewProjection;
   v.position = camera.position();
   return v;
@@ -48,7 +58,7 @@ void FrameView::setJitter(glm::vec2 pixels) {
   }
   jitter = pixels;
   viewProjection = projection * view;
-  inverseViewProjection = glm::inverse(viewProjection);
+  inverseViewProjection = preciseInverse(viewProjection);
 }
 
 }  // namespace bounce

@@ -180,7 +180,12 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
 void DeferredPipeline::geometry(RenderGraph& g, const FrameContext& frame) const {
   Blackboard& bb = g.blackboard();
   const size_t triangles = frame.scene.triangleCount();
-  const glm::mat4 viewProjection = frame.view.viewProjection;
+  // gbuffer.vert/.frag's push constants after the draw's own: the view, the texture bias.
+  struct GBufferPush {
+    glm::mat4 viewProjection;
+    float textureLodBias;
+  };
+  const GBufferPush gbufferPush{frame.view.viewProjection, frame.view.textureLodBias};
   g.addPass("GBuffer", Queue::Graphics, [&](PassBuilder& b) -> RecordFn {
     auto target = [&](std::string_view channel, VkFormat format, Access access) {
       TextureHandle h =
@@ -214,11 +219,11 @@ void DeferredPipeline::geometry(RenderGraph& g, const FrameContext& frame) const
       common.buffer("SceneInstances", ctx.scene().instances())
           .buffer("SceneMaterials", ctx.scene().materials());
       ctx.drawScene(
-          singleSided, common, [](const gpu::GpuDraw& d) { return !d.doubleSided; }, &viewProjection,
-          sizeof(viewProjection));
+          singleSided, common, [](const gpu::GpuDraw& d) { return !d.doubleSided; }, &gbufferPush,
+          sizeof(gbufferPush));
       ctx.drawScene(
-          doubleSided, common, [](const gpu::GpuDraw& d) { return d.doubleSided; }, &viewProjection,
-          sizeof(viewProjection));
+          doubleSided, common, [](const gpu::GpuDraw& d) { return d.doubleSided; }, &gbufferPush,
+          sizeof(gbufferPush));
       ctx.endRendering();
       // Every target is stored once per pixel; overdraw's depth tests and rewrites, and
       // the vertex and material reads, are not counted (a lower bound).

@@ -41,6 +41,8 @@ struct FrameOutputs {
   /// Where the frame samples its pixels, in render pixels from their centres
   /// (FrameView::jitter): frames averaged at several offsets cover each pixel's area.
   glm::vec2 jitter{0.0f};
+  /// Added to the level of detail of the G-buffer's texture lookups (FrameView::textureLodBias).
+  float textureLodBias = 0.0f;
 };
 
 class DeferredPipeline {

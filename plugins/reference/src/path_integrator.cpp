@@ -169,12 +169,27 @@ PathEstimate PathIntegrator::estimate(const CameraRay& ray, uint32_t pixel, uint
                                       uint64_t& rays) const {
   PathEstimate out;
   if (!finite(ray.origin) || !finite(ray.direction)) return out;
+  // What the camera sees, as the rasterizer draws it: the back of a single-sided surface
+  // is culled there (glTF), so the camera ray passes it and sees what lies behind (a
+  // window frame's inside, seen through the frame's open back, lit the breakfast room's
+  // wall 1 px wider in the raster than here). Every later ray, like a shadow map, takes
+  // both faces as opaque. At most kMostCulledFaces layers: a ray through a stack of
+  // back faces ends black instead of looping.
+  constexpr int kMostCulledFaces = 16;
   RayHit hit;
-  ++rays;
-  if (!scene_.embree.intersect(ray.origin, ray.direction, 0.0f, kInfinity, hit))
-    return out;  // background: black
-  const GeometryRecord& g = scene_.embree.geometries()[hit.geomID];
-  const SurfacePoint s = scene_.materials.surfaceAt(g, hit.primID, hit.u, hit.v, ray.direction);
+  SurfacePoint s;
+  glm::vec3 origin = ray.origin;
+  float tMin = 0.0f;
+  for (int layer = 0;; ++layer) {
+    ++rays;
+    if (layer == kMostCulledFaces || !scene_.embree.intersect(origin, ray.direction, tMin, kInfinity, hit))
+      return out;  // background: black
+    const GeometryRecord& g = scene_.embree.geometries()[hit.geomID];
+    s = scene_.materials.surfaceAt(g, hit.primID, hit.u, hit.v, ray.direction);
+    if (s.frontFace || s.doubleSided) break;
+    origin = offsetRayOrigin(s, ray.direction);  // through the surface, to its far side
+    tMin = s.offset;
+  }
   const glm::vec3 V = -ray.direction;
   const glm::vec3& N = s.shadingNormal;
 

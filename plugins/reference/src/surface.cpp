@@ -88,9 +88,10 @@ SurfacePoint MaterialTable::surfaceAt(const GeometryRecord& g, uint32_t primID, 
   if (s.frontFace || s.doubleSided) s.emission = emission(g, primID, u, v);
 
   if (!s.frontFace && !s.doubleSided) {
-    // A single-sided back face: the rasterizer culls it and shows what lies behind, so
-    // there is no G-buffer normal to match. Closed scenes never show one; shade it with
-    // the geometric normal facing the ray so it behaves like an opaque surface.
+    // A single-sided back face: the rasterizer culls it and shows what lies behind (camera
+    // rays pass it too, PathIntegrator::estimate). A later ray that meets one shades it
+    // with the geometric normal facing the ray, an opaque surface, as shadow maps and
+    // the engine's ray tracing take both faces.
     s.shadingNormal = s.geometricNormal;
     return s;
   }

@@ -246,7 +246,8 @@ TEST(BuiltScene, EmissionAndShadingOfBackFaces) {
     EXPECT_FLOAT_EQ(acc.radiance().at(4, 4, 2), doubleSided ? 3.0f : 0.0f) << "double-sided " << doubleSided;
   }
   // A plane lit from below and seen from below: double-sided shades the back with the
-  // flipped normal, single-sided with the geometric normal facing the ray: both lit.
+  // flipped normal (lit); a single-sided back face is culled for the camera, as the
+  // rasterizer culls it, and the camera sees what lies behind: nothing.
   for (bool doubleSided : {false, true}) {
     Scene scene = planeScene(lambert(glm::vec3(0.5f), glm::vec3(0.0f), doubleSided));
     scene.editCamera(0, [](Camera& c) { c = lookAt({0, -2, 0}, {0, 0, 0}, {0, 0, 1}); });
@@ -257,10 +258,25 @@ TEST(BuiltScene, EmissionAndShadingOfBackFaces) {
     tracer.addSamples(acc, view, 1, {});
     const glm::dvec3 p = *pixelOnPlaneY(view, 4, 4, 0.0);
     const double r2 = glm::dot(p - glm::dvec3(0, -1, 0), p - glm::dvec3(0, -1, 0));
-    const double expected = 0.5 * 4.0 * (1.0 / std::sqrt(r2)) / (kPi * r2);
+    const double expected = doubleSided ? 0.5 * 4.0 * (1.0 / std::sqrt(r2)) / (kPi * r2) : 0.0;
     EXPECT_NEAR(acc.radiance().at(4, 4, 0), expected, kNoiseFree * expected)
         << "double-sided " << doubleSided;
   }
+}
+
+TEST(BuiltScene, ShadowRaysAreStoppedByEitherFaceOfASingleSidedSurface) {
+  // A single-sided square between a point light and a plane, its back toward the camera
+  // above: the camera sees through it (culled, as the rasterizer culls it) onto the plane,
+  // which the square shadows all the same (shadow maps draw both faces).
+  Scene scene = planeScene(lambert(glm::vec3(0.5f)));
+  addPrimitives(scene, {square({0, 0.5f, 0}, {0, -1, 0}, 3.0f, scene.addMaterial(lambert(glm::vec3(0.9f))))});
+  scene.addLight(pointLight({0, 1, 0}, 4.0f));
+  PathTracer tracer(scene);
+  const FrameView view = FrameView::fromCamera(scene.cameras()[0], 8, 8);
+  Accumulation acc(view.width, view.height);
+  tracer.addSamples(acc, view, 1, {.maxBounces = 0});
+  EXPECT_EQ(acc.radiance().at(3, 4, 0), 0.0f);
+  EXPECT_EQ(acc.direct().at(3, 4, 0), 0.0f);
 }
 
 TEST(BuiltScene, LightsThatCastNoShadowsAreNotOccluded) {
@@ -292,7 +308,10 @@ TEST(BuiltScene, AlphaMaskedGeometryIsCutOut) {
     mask.alphaMode = AlphaMode::Mask;
     mask.alphaCutoff = 0.5f;
     mask.baseColorFactor.a = alpha;
-    mask.emissiveFactor = glm::vec3(5.0f);  // a masked-out emitter must not light anything
+    // A masked-out emitter must not light anything; the kept one is seen from behind,
+    // so it is double-sided (a single-sided back face is culled for the camera).
+    mask.emissiveFactor = glm::vec3(alpha < 0.5f ? 5.0f : 0.0f);
+    mask.doubleSided = alpha >= 0.5f;
     addPrimitives(scene, {square({0, 0.5f, 0}, {0, -1, 0}, 3.0f, scene.addMaterial(mask))});
     scene.addLight(pointLight({0, 1, 0}, 4.0f));
     PathTracer tracer(scene);
@@ -305,8 +324,8 @@ TEST(BuiltScene, AlphaMaskedGeometryIsCutOut) {
     if (alpha < 0.5f) {
       EXPECT_NEAR(acc.radiance().at(3, 4, 0), lit, kNoiseFree * lit);
     } else {
-      // The camera sees the square's back: single-sided, so no emission toward the
-      // camera, and shaded with its geometric normal toward the ray, lit by the light.
+      // The camera sees the square's back: double-sided, shaded with its normal flipped
+      // toward the ray, lit by the light.
       const glm::dvec3 q = *pixelOnPlaneY(view, 3, 4, 0.5);
       const double q2 = glm::dot(glm::dvec3(0, 1, 0) - q, glm::dvec3(0, 1, 0) - q);
       const double back = 0.9 * 4.0 * (0.5 / std::sqrt(q2)) / (kPi * q2);

@@ -39,6 +39,11 @@ struct FrameView {
   glm::vec2 jitter{0.0f};
   /// `viewProjection` without the jitter: what stays the same while the camera does.
   glm::mat4 unjitteredViewProjection{1.0f};
+  /// Added to the mip level the G-buffer's texture lookups pick from the pixel footprint.
+  /// Frames averaged over N sub-pixel offsets each stand for 1/N of a pixel, so they look
+  /// textures up at that footprint: −½·log2 N (Renderer::renderAccumulated), as Unreal's
+  /// temporal upscalers bias by the samples a pixel will gather.
+  float textureLodBias = 0.0f;
 
   /// The previous frame's view-projection and camera position (motion vectors,
   /// reprojecting a history), and whether anything kept from that frame may be reused:

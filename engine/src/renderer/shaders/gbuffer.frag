@@ -6,7 +6,7 @@
 
 SCENE_INSTANCES(0)
 SCENE_MATERIALS(1)
-SCENE_DRAW_PUSH_CONSTANTS(mat4 viewProjection;)
+SCENE_DRAW_PUSH_CONSTANTS(mat4 viewProjection; float textureLodBias;)
 layout(binding = 2) uniform sampler2D baseColorTexture;
 layout(binding = 3) uniform sampler2D metallicRoughnessTexture;
 layout(binding = 4) uniform sampler2D normalTexture;
@@ -24,9 +24,9 @@ layout(location = 3) out vec4 outEmissive;
 
 void main() {
   Material m = materials[draw.material];
-  vec4 base = m.baseColor * texture(baseColorTexture, inUv);
+  vec4 base = m.baseColor * texture(baseColorTexture, inUv, draw.textureLodBias);
   if (m.alphaCutoff >= 0.0 && base.a < m.alphaCutoff) discard;
-  vec2 mr = texture(metallicRoughnessTexture, inUv).bg;  // glTF: B = metallic, G = roughness
+  vec2 mr = texture(metallicRoughnessTexture, inUv, draw.textureLodBias).bg;  // glTF: B = metallic, G = roughness
   float metallic = saturate(m.metallic * mr.x);
   float roughness = saturate(m.roughness * mr.y);
 
@@ -42,12 +42,12 @@ void main() {
     if (dot(T, T) > 1e-12 && inTangent.w != 0.0) {
       T = normalize(T);
       vec3 B = cross(N, T) * sign(inTangent.w);
-      vec3 tn = texture(normalTexture, inUv).xyz * 2.0 - 1.0;
+      vec3 tn = texture(normalTexture, inUv, draw.textureLodBias).xyz * 2.0 - 1.0;
       tn.xy *= m.normalScale;
       N = safeNormalize(mat3(T, B, N) * tn, N);
     }
   }
-  vec3 emission = m.emission.rgb * texture(emissiveTexture, inUv).rgb;
+  vec3 emission = m.emission.rgb * texture(emissiveTexture, inUv, draw.textureLodBias).rgb;
 
   outBaseColor = vec4(saturate(base.rgb), 1.0);
   outNormalRoughness = vec4(N, roughness);

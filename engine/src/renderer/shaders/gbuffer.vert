@@ -3,7 +3,7 @@
 
 SCENE_VERTEX_INPUTS
 SCENE_INSTANCES(0)
-SCENE_DRAW_PUSH_CONSTANTS(mat4 viewProjection;)
+SCENE_DRAW_PUSH_CONSTANTS(mat4 viewProjection; float textureLodBias;)
 
 layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec3 outNormal;

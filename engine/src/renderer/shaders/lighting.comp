@@ -57,7 +57,7 @@ layout(push_constant) uniform Push {
 // exact hit points, above the rounding of the reconstruction itself.
 float shadowRayOffset(vec3 P, vec2 uv, float depth) {
   // Below 1, which is infinitely far (the last float under 1 is 0x3F7FFFFF).
-  float nextDepth = min(uintBitsToFloat(floatBitsToUint(depth) + 16u), uintBitsToFloat(0x3F7FFFFFu));
+  float nextDepth = min(uintBitsToFloat(floatBitsToUint(depth) + 4u), uintBitsToFloat(0x3F7FFFFFu));
   float depthError = distance(worldPositionFromDepth(uv, nextDepth, pc.inverseViewProjection), P);
   if (!(depthError < 1e30)) depthError = 0.0;  // NaN or infinite: the relative floor below
   vec3 a = abs(P);
