@@ -77,6 +77,10 @@ TemporalMeasure measureTemporal(
   TemporalMeasure out;
   FrameOutputs outputs;
   outputs.aovs = {"radiance"};
+  // Settle first on the unjittered view: the scored still before this jittered the view,
+  // and a history filled from jittered frames (VXGI's sparse tracing) takes its k² frames
+  // to be replaced, which read as flicker (VXGI's p95 0.044 on the Cornell box).
+  if (framesUntilSettled(renderer, view, frameIndex, options.mostFrames, &out.error).empty()) return out;
   std::vector<ImageBuffer> still;
   for (uint32_t i = 0; i < options.flickerFrames; ++i) {
     RenderedFrame f = renderer.render(view, outputs, frameIndex++);
