@@ -2,6 +2,31 @@
 
 namespace bounce {
 
+namespace {
+
+CVarRef<bool> declareCacheShadowMaps(CVarRegistry& cvars) {
+  return cvars.add<bool>({.name = "r.Shadow.CacheStaticMaps",
+                          .defaultValue = true,
+                          .help =
+                              "Keep shadow maps from frame to frame while the scene's geometry, transforms "
+                              "and shadow matrices stay the same (0: draw them every frame).",
+                          .category = "Renderer|Shadows"});
+}
+
+CVarRef<bool> declareRayTracedShadows(CVarRegistry& cvars) {
+  return cvars.add<bool>(
+      {.name = "r.RayTracing.Shadows",
+       .defaultValue = false,
+       .help = "Shadows of direct light from one shadow ray per light and pixel through the scene's ray "
+               "tracing: exact and sharp as the path tracer's, where shadow maps blur by a texel and leak "
+               "through thin walls. 0: shadow maps (no BVH is built for the lighting pass).",
+       .ini = {"/Script/Engine.RendererSettings", "r.RayTracing.Shadows"},
+       .postProcess = "RayTracingShadows",
+       .category = "Renderer|Shadows"});
+}
+
+}  // namespace
+
 RendererSettings::RendererSettings(CVarRegistry& cvars)
     : shadowMapSize(
           cvars.add<int32_t>({.name = "r.Shadow.MapSize",
@@ -111,21 +136,7 @@ RendererSettings::RendererSettings(CVarRegistry& cvars)
                             .max = 200.0,
                             .outOfRange = RangePolicy::Clamp,
                             .category = "Renderer|Resolution"})),
-      cacheShadowMaps(cvars.add<bool>(
-          {.name = "r.Shadow.CacheStaticMaps",
-           .defaultValue = true,
-           .help = "Keep shadow maps from frame to frame while the scene's geometry, transforms and shadow "
-                   "matrices stay the same (0: draw them every frame).",
-           .category = "Renderer|Shadows"})),
-      rayTracedShadows(cvars.add<bool>(
-          {.name = "r.RayTracing.Shadows",
-           .defaultValue = false,
-           .help =
-               "Shadows of direct light from one shadow ray per light and pixel through the scene's ray "
-               "tracing: exact and sharp as the path tracer's, where shadow maps blur by a texel and leak "
-               "through thin walls. 0: shadow maps (no BVH is built for the lighting pass).",
-           .ini = {"/Script/Engine.RendererSettings", "r.RayTracing.Shadows"},
-           .postProcess = "RayTracingShadows",
-           .category = "Renderer|Shadows"})) {}
+      cacheShadowMaps(declareCacheShadowMaps(cvars)),
+      rayTracedShadows(declareRayTracedShadows(cvars)) {}
 
 }  // namespace bounce
