@@ -1,6 +1,7 @@
 # bounce-bench's command line refuses what it cannot measure before rendering anything:
-# each case must exit 2 (bad input) with one line naming the option. A shell wrapper
-# checks the status, since ctest alone can only tell zero from non-zero.
+# each case must exit 2 (bad input) with one line naming the option, and leave no report
+# folder behind. A shell wrapper checks the status, since ctest alone can only tell zero
+# from non-zero.
 if(TARGET bounce-bench)
   set(cases
       "accumulate_zero|--accumulate|--accumulate 0"
@@ -18,8 +19,9 @@ if(TARGET bounce-bench)
     list(GET parts 1 must_say)
     list(GET parts 2 arguments)
     add_test(NAME bench_cli.${name}
-             COMMAND sh -c "out=$($<TARGET_FILE:bounce-bench> --width 8 --height 8 ${arguments} 2>&1); s=$?; \
-echo \"$out\"; [ $s -eq 2 ] && printf '%s' \"$out\" | grep -qF -- '${must_say}'")
+             COMMAND sh -c "dir=${CMAKE_CURRENT_BINARY_DIR}/bench-cli-${name}; rm -rf $dir; \
+out=$($<TARGET_FILE:bounce-bench> --width 8 --height 8 --out $dir ${arguments} 2>&1); s=$?; \
+echo \"$out\"; [ $s -eq 2 ] && printf '%s' \"$out\" | grep -qF -- '${must_say}' && [ ! -e $dir ]")
     set_tests_properties(bench_cli.${name} PROPERTIES
       ENVIRONMENT "BOUNCE_ROOT=${PROJECT_SOURCE_DIR};BOUNCE_SHADER_CACHE=${PROJECT_BINARY_DIR}/shader-cache"
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} LABELS bench-cli TIMEOUT 120)
