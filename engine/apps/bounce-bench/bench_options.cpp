@@ -4,6 +4,7 @@
 #include "bounce/engine.h"
 #include "parse_arguments.h"
 #include "reference_cache.h"
+#include "technique_groups.h"
 
 #include <fmt/format.h>
 
@@ -95,7 +96,7 @@ bool resolveTechniques(BenchOptions& options, std::string* error) {
   if (options.techniques.empty()) {
     options.techniques = available;
     std::stable_partition(options.techniques.begin(), options.techniques.end(),
-                          [](const std::string& t) { return !equalsIgnoreCase(t, "Reference"); });
+                          [](const std::string& t) { return !isPathTracer(t); });
   }
   for (std::string& t : options.techniques) {
     auto it = std::find_if(available.begin(), available.end(),

@@ -4,6 +4,7 @@
 #include "bounce/engine.h"
 #include "renderer/render_stats.h"
 #include "renderer/renderer.h"
+#include "technique_groups.h"
 #include "temporal_measure.h"
 
 #include <fmt/format.h>
@@ -26,8 +27,6 @@ std::string slug(const std::string& label) {
   return s;
 }
 
-bool isPathTracer(const Configuration& config) { return equalsIgnoreCase(config.technique, "Reference"); }
-
 // A fresh engine for `config` on the benchmark's scene (reproducible: no per-user settings).
 std::unique_ptr<Engine> startEngine(const Configuration& config, const MeasureOptions& options,
                                     std::string* error) {
@@ -36,7 +35,7 @@ std::unique_ptr<Engine> startEngine(const Configuration& config, const MeasureOp
   o.technique = config.technique;
   o.sets = options.sets;
   o.pluginDirs = options.pluginDirs;
-  if (isPathTracer(config)) {
+  if (isPathTracer(config.technique)) {
     // Every timed frame renders all its samples (and quietly), over box-filtered pixels.
     o.sets.push_back("r.Reference.Progressive=false");
     o.sets.push_back("r.Reference.ShowProgress=false");
@@ -130,7 +129,7 @@ std::optional<Measurement> measureConfiguration(const Configuration& config, con
   // The scored still: the path tracer's samples already cover each pixel; a raster technique
   // averages frames at sub-pixel offsets.
   FrameOutputs scored{{"radiance", "direct", "indirect-irradiance"}, true};
-  const uint32_t accumulate = isPathTracer(config) ? 1 : std::max(1u, options.accumulate);
+  const uint32_t accumulate = isPathTracer(config.technique) ? 1 : std::max(1u, options.accumulate);
   RenderedFrame still = renderer.renderAccumulated(view, scored, index, accumulate);
   index += accumulate;
   if (!still.gpu.ok()) {
@@ -155,7 +154,7 @@ std::optional<Measurement> measureConfiguration(const Configuration& config, con
     return std::nullopt;
   }
 
-  if (options.temporal && !isPathTracer(config)) {
+  if (options.temporal && !isPathTracer(config.technique)) {
     const TemporalMeasure t = measureTemporal(*engine, renderer, view, index, [&](uint32_t light) {
       return renderWithoutLight(config, device, options, light);
     });

@@ -67,57 +67,70 @@ void appendRow(std::string& out, const std::vector<std::string>& fields) {
 // A count that may be unknown (−1): missing, not a number.
 std::string csvCount(int value) { return value < 0 ? std::string() : std::to_string(value); }
 
-void appendMeasurement(std::string& out, const Report& report, const Measurement& m,
-                       const std::vector<std::string>& passes) {
-  std::vector<std::string> row = {
-      report.scene,
-      m.config.technique,
-      m.config.label,
-      m.config.isDefault ? "1" : "0",
-      settingsText(m.config),
-      csvNumber(m.gpuMs),
-      csvNumber(m.cpuMs),
-      csvNumber(m.totalMs),
-      std::to_string(m.settlingFrames),
-      std::to_string(m.persistentBytes),
-      std::to_string(m.transientBytes),
-      csvNumber(m.radiance.relativeRmse),
-      csvNumber(m.radiance.meanRelativeError),
-      csvNumber(m.radiance.maxAbsoluteError),
-      csvNumber(m.radiance.meanRatio),
-      csvNumber(m.irradiance.relativeRmse),
-      csvNumber(m.irradiance.meanRelativeError),
-      csvNumber(m.irradiance.maxAbsoluteError),
-      csvNumber(m.irradiance.meanRatio),
-      csvNumber(m.irradiance.lowestRegionRatio),
-      csvNumber(m.irradiance.highestRegionRatio),
-      // Negative means "outside the path tracer's measured range": missing, like NaN.
-      m.pathTracerEquivalentMs < 0 ? std::string() : csvNumber(m.pathTracerEquivalentMs),
-      m.onParetoFront ? "1" : "0",
-      m.image,
-      m.heatMap,
-      csvNumber(m.total.unbiasedRelativeRmse),
-      csvNumber(m.direct.relativeRmse),
-      csvNumber(m.direct.relativeMae),
-      csvNumber(m.indirect.relativeRmse),
-      csvNumber(m.indirect.relativeMae),
-      csvNumber(m.indirect.unbiasedRelativeRmse),
-      csvNumber(m.indirect.meanRatio),
-      csvNumber(m.indirect.noiseRelativeRmse),
-      std::to_string(report.referenceSamples),
-      m.temporal ? csvNumber(m.flickerMean) : std::string(),
-      m.temporal ? csvNumber(m.flickerP95) : std::string(),
-      m.temporal ? csvCount(m.responseFramesOff) : std::string(),
-      m.temporal && m.responseMsOff >= 0 ? csvNumber(m.responseMsOff) : std::string(),
-      m.temporal ? csvCount(m.responseFramesOn) : std::string(),
-      m.temporal ? csvCount(m.responseFramesMove) : std::string(),
-      m.temporal ? csvNumber(m.peakOvershoot) : std::string(),
-      m.temporal ? csvNumber(m.offResidue) : std::string(),
-      m.temporal ? (m.reachesZero ? "1" : "0") : std::string(),
-  };
-  for (const std::string& pass : passes) row.push_back(csvNumber(passMs(m, pass)));
-  appendRow(out, row);
+// A non-negative quantity where negative means "not measured" (e.g. outside the path
+// tracer's measured range): missing, like NaN.
+std::string csvIfMeasured(double value) { return value < 0 ? std::string() : csvNumber(value); }
+
+// One fixed column: its name and its value for a measurement, defined together so the
+// header and the rows cannot drift apart.
+struct Column {
+  std::string_view name;
+  std::string (*value)(const Report&, const Measurement&);
+};
+
+// The temporal columns are empty where the configuration was not measured over time.
+template <std::string (*Value)(const Measurement&)>
+std::string temporal(const Report&, const Measurement& m) {
+  return m.temporal ? Value(m) : std::string();
 }
+
+using R = const Report&;
+using M = const Measurement&;
+constexpr Column kColumns[] = {
+    {"scene", [](R r, M) { return r.scene; }},
+    {"technique", [](R, M m) { return m.config.technique; }},
+    {"label", [](R, M m) { return m.config.label; }},
+    {"default", [](R, M m) { return std::string(m.config.isDefault ? "1" : "0"); }},
+    {"settings", [](R, M m) { return settingsText(m.config); }},
+    {"gpu_ms", [](R, M m) { return csvNumber(m.gpuMs); }},
+    {"cpu_ms", [](R, M m) { return csvNumber(m.cpuMs); }},
+    {"total_ms", [](R, M m) { return csvNumber(m.totalMs); }},
+    {"settling_frames", [](R, M m) { return std::to_string(m.settlingFrames); }},
+    {"persistent_bytes", [](R, M m) { return std::to_string(m.persistentBytes); }},
+    {"transient_bytes", [](R, M m) { return std::to_string(m.transientBytes); }},
+    {"radiance_rel_rmse", [](R, M m) { return csvNumber(m.radiance.relativeRmse); }},
+    {"radiance_mean_rel_error", [](R, M m) { return csvNumber(m.radiance.meanRelativeError); }},
+    {"radiance_max_abs", [](R, M m) { return csvNumber(m.radiance.maxAbsoluteError); }},
+    {"radiance_mean_ratio", [](R, M m) { return csvNumber(m.radiance.meanRatio); }},
+    {"irradiance_rel_rmse", [](R, M m) { return csvNumber(m.irradiance.relativeRmse); }},
+    {"irradiance_mean_rel_error", [](R, M m) { return csvNumber(m.irradiance.meanRelativeError); }},
+    {"irradiance_max_abs", [](R, M m) { return csvNumber(m.irradiance.maxAbsoluteError); }},
+    {"irradiance_mean_ratio", [](R, M m) { return csvNumber(m.irradiance.meanRatio); }},
+    {"irradiance_region_ratio_lowest", [](R, M m) { return csvNumber(m.irradiance.lowestRegionRatio); }},
+    {"irradiance_region_ratio_highest", [](R, M m) { return csvNumber(m.irradiance.highestRegionRatio); }},
+    {"path_tracer_equivalent_ms", [](R, M m) { return csvIfMeasured(m.pathTracerEquivalentMs); }},
+    {"on_pareto_front", [](R, M m) { return std::string(m.onParetoFront ? "1" : "0"); }},
+    {"image", [](R, M m) { return m.image; }},
+    {"heat_map", [](R, M m) { return m.heatMap; }},
+    {"total_rel_rmse_unbiased", [](R, M m) { return csvNumber(m.total.unbiasedRelativeRmse); }},
+    {"direct_rel_rmse", [](R, M m) { return csvNumber(m.direct.relativeRmse); }},
+    {"direct_rel_mae", [](R, M m) { return csvNumber(m.direct.relativeMae); }},
+    {"indirect_rel_rmse", [](R, M m) { return csvNumber(m.indirect.relativeRmse); }},
+    {"indirect_rel_mae", [](R, M m) { return csvNumber(m.indirect.relativeMae); }},
+    {"indirect_rel_rmse_unbiased", [](R, M m) { return csvNumber(m.indirect.unbiasedRelativeRmse); }},
+    {"indirect_mean_ratio", [](R, M m) { return csvNumber(m.indirect.meanRatio); }},
+    {"reference_noise_rel_rmse", [](R, M m) { return csvNumber(m.indirect.noiseRelativeRmse); }},
+    {"reference_spp", [](R r, M) { return std::to_string(r.referenceSamples); }},
+    {"flicker_mean", temporal<[](M m) { return csvNumber(m.flickerMean); }>},
+    {"flicker_p95", temporal<[](M m) { return csvNumber(m.flickerP95); }>},
+    {"response_frames_off", temporal<[](M m) { return csvCount(m.responseFramesOff); }>},
+    {"response_ms_off", temporal<[](M m) { return csvIfMeasured(m.responseMsOff); }>},
+    {"response_frames_on", temporal<[](M m) { return csvCount(m.responseFramesOn); }>},
+    {"response_frames_move", temporal<[](M m) { return csvCount(m.responseFramesMove); }>},
+    {"peak_overshoot", temporal<[](M m) { return csvNumber(m.peakOvershoot); }>},
+    {"off_residue", temporal<[](M m) { return csvNumber(m.offResidue); }>},
+    {"reaches_zero", temporal<[](M m) { return std::string(m.reachesZero ? "1" : "0"); }>},
+};
 
 }  // namespace
 
@@ -125,55 +138,19 @@ bool writeCsv(const std::vector<Report>& reports, const std::string& path, std::
   std::vector<Measurement> all;
   for (const Report& r : reports) all.insert(all.end(), r.measurements.begin(), r.measurements.end());
   const std::vector<std::string> passes = passNamesInFirstSeenOrder(all);
-  std::vector<std::string> header = {"scene",
-                                     "technique",
-                                     "label",
-                                     "default",
-                                     "settings",
-                                     "gpu_ms",
-                                     "cpu_ms",
-                                     "total_ms",
-                                     "settling_frames",
-                                     "persistent_bytes",
-                                     "transient_bytes",
-                                     "radiance_rel_rmse",
-                                     "radiance_mean_rel_error",
-                                     "radiance_max_abs",
-                                     "radiance_mean_ratio",
-                                     "irradiance_rel_rmse",
-                                     "irradiance_mean_rel_error",
-                                     "irradiance_max_abs",
-                                     "irradiance_mean_ratio",
-                                     "irradiance_region_ratio_lowest",
-                                     "irradiance_region_ratio_highest",
-                                     "path_tracer_equivalent_ms",
-                                     "on_pareto_front",
-                                     "image",
-                                     "heat_map",
-                                     "total_rel_rmse_unbiased",
-                                     "direct_rel_rmse",
-                                     "direct_rel_mae",
-                                     "indirect_rel_rmse",
-                                     "indirect_rel_mae",
-                                     "indirect_rel_rmse_unbiased",
-                                     "indirect_mean_ratio",
-                                     "reference_noise_rel_rmse",
-                                     "reference_spp",
-                                     "flicker_mean",
-                                     "flicker_p95",
-                                     "response_frames_off",
-                                     "response_ms_off",
-                                     "response_frames_on",
-                                     "response_frames_move",
-                                     "peak_overshoot",
-                                     "off_residue",
-                                     "reaches_zero"};
+  std::vector<std::string> header;
+  for (const Column& c : kColumns) header.emplace_back(c.name);
   for (const std::string& pass : passes) header.push_back(fmt::format("{}{}", kPassColumnPrefix, pass));
 
   std::string out;
   appendRow(out, header);
   for (const Report& report : reports)
-    for (const Measurement& m : report.measurements) appendMeasurement(out, report, m, passes);
+    for (const Measurement& m : report.measurements) {
+      std::vector<std::string> row;
+      for (const Column& c : kColumns) row.push_back(c.value(report, m));
+      for (const std::string& pass : passes) row.push_back(csvNumber(passMs(m, pass)));
+      appendRow(out, row);
+    }
   return writeReportFile(path, out, error);
 }
 

@@ -20,8 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool isPathTracer(const Measurement& m) { return equalsIgnoreCase(m.config.technique, kReferenceTechnique); }
-
 std::vector<Configuration> configurations(const BenchOptions& options) {
   std::vector<Configuration> configs;
   for (const std::string& t : options.techniques) {
@@ -33,8 +31,7 @@ std::vector<Configuration> configurations(const BenchOptions& options) {
     Engine engine(std::move(o));
     for (Configuration& c : configurationsFor(engine, t, options.grid))
       // The path tracer's samples are its error-versus-time curve, not a knob to skip.
-      if (!options.defaultsOnly || c.isDefault || equalsIgnoreCase(t, kReferenceTechnique))
-        configs.push_back(std::move(c));
+      if (!options.defaultsOnly || c.isDefault || isPathTracer(t)) configs.push_back(std::move(c));
   }
   return configs;
 }
@@ -64,7 +61,7 @@ bool scoreAgainstReference(Report& report, const fs::path& scene, const BenchOpt
                                   combineImages(r->radianceHalves[1], r->directHalves[1], -1.0f));
     double smallest = std::numeric_limits<double>::infinity();
     for (const Measurement& m : report.measurements)
-      if (!isPathTracer(m) && std::isfinite(m.indirect.relativeRmse))
+      if (!isPathTracer(m.config.technique) && std::isfinite(m.indirect.relativeRmse))
         smallest = std::min(smallest, m.indirect.relativeRmse);
     report.referenceSamples = r->samples;
     report.referenceSeconds = r->seconds;

@@ -15,6 +15,11 @@ namespace bounce::bench {
 /// The path tracer's technique name: its measurements form the error-versus-time curve.
 inline constexpr std::string_view kReferenceTechnique = "Reference";
 
+/// Whether `technique` is the path tracer (plugin names compare case-insensitively).
+inline bool isPathTracer(std::string_view technique) {
+  return equalsIgnoreCase(technique, kReferenceTechnique);
+}
+
 struct TechniqueGroup {
   std::string technique;                    ///< spelt as first measured
   std::vector<const Measurement*> members;  ///< in report order

@@ -60,9 +60,9 @@ std::vector<ImageBuffer> framesUntilSettled(Renderer& renderer, const FrameView&
       return {};
     }
     ImageBuffer image = std::move(f.images.at("radiance"));
-    // A technique that adapts by blending (DDGI's probes) has no settling note after a
-    // change of light, only a changing image: it has settled when the image stops
-    // changing. 1e-4 of the mean is far below any visible step and above float rounding.
+    // A technique that adapts by blending (a probe volume's hysteresis) has no settling
+    // note after a change of light, only a changing image: it has settled when the image
+    // stops changing. 1e-4 of the mean is far below any visible step and above float rounding.
     const bool still = !frames.empty() && relativeMae(image, frames.back(), meanValue(image)) < 1e-4;
     quiet = f.settling.empty() && still ? quiet + 1 : 0;
     frames.push_back(std::move(image));
@@ -78,8 +78,8 @@ TemporalMeasure measureTemporal(
   FrameOutputs outputs;
   outputs.aovs = {"radiance"};
   // Settle first on the unjittered view: the scored still before this jittered the view,
-  // and a history filled from jittered frames (VXGI's sparse tracing) takes its k² frames
-  // to be replaced, which read as flicker (VXGI's p95 0.044 on the Cornell box).
+  // and a history filled from jittered frames (sparse tracing's) takes its own frames to
+  // be replaced, which read as flicker (a p95 of 0.044 on the Cornell box).
   if (framesUntilSettled(renderer, view, frameIndex, options.mostFrames, &out.error).empty()) return out;
   std::vector<ImageBuffer> still;
   for (uint32_t i = 0; i < options.flickerFrames; ++i) {
