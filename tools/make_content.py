@@ -17,6 +17,7 @@ import json
 import math
 import os
 import struct
+import zlib
 
 # --- scene parameters -------------------------------------------------------------------
 
@@ -53,6 +54,8 @@ TEST_POINT_HEIGHT = 1.0            # m above the plane centre
 TEST_OCCLUDER_SIZE = 1.0           # m, square
 TEST_OCCLUDER_HEIGHT = 0.5         # m, between the point light and the plane
 TEST_OCCLUDER_THICKNESS = 0.02     # m
+TEST_MASK_TEXELS = 8               # side of the masked occluder's alpha texture
+TEST_MASK_SQUARE = 2               # texels per side of its checker squares (alpha 1 or 0)
 TEST_CAMERA_HEIGHT = 2.0           # m; with yfov 0.8 the 4 m plane fills even a 16:9 view
 TEST_CAMERA_YFOV = 0.8             # rad
 EMISSIVE_QUAD_COLOR = (1.0, 0.5, 0.25)
@@ -125,14 +128,18 @@ class Geometry:
 
     def __init__(self):
         self.positions, self.normals, self.indices = [], [], []
+        self.uvs = []  # TEXCOORD_0, written when every vertex has one
 
-    def quad(self, center, u, v):
-        """Rectangle center +- u +- v, facing cross(u, v)."""
+    def quad(self, center, u, v, texcoords=False):
+        """Rectangle center +- u +- v, facing cross(u, v); with texcoords, UV (0,0) at center - u - v
+        and (1,1) at center + u + v."""
         n = normalize(cross(u, v))
         base = len(self.positions)
         for su, sv in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
             self.positions.append(add(center, add(scale(u, su), scale(v, sv))))
             self.normals.append(n)
+            if texcoords:
+                self.uvs.append(((su + 1) / 2, (sv + 1) / 2))
         self.indices += [base, base + 1, base + 2, base, base + 2, base + 3]
         return self
 
@@ -206,11 +213,32 @@ class GltfScene:
             {"bufferView": view, "componentType": component_type, "count": count, "type": kind, **extra})
         return len(self.doc["accessors"]) - 1
 
+    def texture(self, width, height, rgba):
+        """An embedded PNG (8-bit RGBA rows, top row first) with the default sampler (linear, repeat)."""
+        raw = b"".join(b"\0" + bytes(rgba[y * width * 4:(y + 1) * width * 4]) for y in range(height))
+
+        def chunk(kind, data):
+            return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+        png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
+               chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+        self.doc.setdefault("images", []).append(
+            {"uri": "data:image/png;base64," + base64.b64encode(png).decode()})
+        self.doc.setdefault("textures", []).append({"source": len(self.doc["images"]) - 1})
+        return len(self.doc["textures"]) - 1
+
     def material(self, name, color, roughness=1.0, metallic=0.0, lambert=True, emissive=None,
-                 emissive_strength=None, extras=None):
+                 emissive_strength=None, extras=None, base_color_texture=None, alpha_cutoff=None,
+                 double_sided=False):
         m = {"name": name,
              "pbrMetallicRoughness": {"baseColorFactor": [*color, 1.0], "metallicFactor": metallic,
                                       "roughnessFactor": roughness}}
+        if base_color_texture is not None:
+            m["pbrMetallicRoughness"]["baseColorTexture"] = {"index": base_color_texture}
+        if alpha_cutoff is not None:
+            m["alphaMode"], m["alphaCutoff"] = "MASK", alpha_cutoff
+        if double_sided:
+            m["doubleSided"] = True
         ext = {}
         if lambert:  # no specular lobe: the BRDF is pure Lambert
             ext["KHR_materials_specular"] = {"specularFactor": 0.0}
@@ -234,9 +262,13 @@ class GltfScene:
         idx_view = self._view(struct.pack("<%d%s" % (len(idx), "I" if wide else "H"), *idx), ELEMENT_ARRAY_BUFFER)
         lo = [min(p[i] for p in pos) for i in range(3)]
         hi = [max(p[i] for p in pos) for i in range(3)]
+        attributes = {"POSITION": self._accessor(pos_view, FLOAT, len(pos), "VEC3", min=lo, max=hi),
+                      "NORMAL": self._accessor(nrm_view, FLOAT, len(nrm), "VEC3")}
+        if geometry.uvs and len(geometry.uvs) == len(pos):
+            uv_view = self._view(b"".join(struct.pack("<2f", *t) for t in geometry.uvs), ARRAY_BUFFER)
+            attributes["TEXCOORD_0"] = self._accessor(uv_view, FLOAT, len(pos), "VEC2")
         primitive = {
-            "attributes": {"POSITION": self._accessor(pos_view, FLOAT, len(pos), "VEC3", min=lo, max=hi),
-                           "NORMAL": self._accessor(nrm_view, FLOAT, len(nrm), "VEC3")},
+            "attributes": attributes,
             "indices": self._accessor(idx_view, UNSIGNED_INT if wide else UNSIGNED_SHORT, len(idx), "SCALAR"),
             "material": material, "mode": 4}
         self.doc["meshes"].append({"name": name, "primitives": [primitive]})
@@ -335,6 +367,25 @@ def lambert_plane_point(occluded):
     if occluded:
         size = (TEST_OCCLUDER_SIZE, TEST_OCCLUDER_THICKNESS, TEST_OCCLUDER_SIZE)
         s.object("Occluder", Geometry().box(size), gray, (0, TEST_OCCLUDER_HEIGHT, 0))
+    return s
+
+
+def masked_occluder_point():
+    """The shadowed plane's occluder as a 1 m alpha-masked quad: a checker of 2-texel squares,
+    alpha 1 and 0, cutoff 0.5. Half of it casts a shadow and is seen; the rest lets light through."""
+    s, gray = lambert_plane("4 m Lambert plane under a point light, an alpha-masked checker quad half way")
+    s.light("Bulb", "point", TEST_POINT_INTENSITY, (0, TEST_POINT_HEIGHT, 0))
+    n = TEST_MASK_TEXELS
+    rgba = []
+    for y in range(n):
+        for x in range(n):
+            kept = (x // TEST_MASK_SQUARE + y // TEST_MASK_SQUARE) % 2 == 0
+            rgba += [255, 255, 255, 255 if kept else 0]
+    checker = s.material("Checker", (TEST_PLANE_ALBEDO,) * 3, base_color_texture=s.texture(n, n, rgba),
+                         alpha_cutoff=0.5, double_sided=True)
+    h = TEST_OCCLUDER_SIZE / 2
+    s.object("MaskedOccluder", Geometry().quad((0, 0, 0), (0, 0, h), (h, 0, 0), texcoords=True), checker,
+             (0, TEST_OCCLUDER_HEIGHT, 0))
     return s
 
 
@@ -561,6 +612,7 @@ def main():
     lambert_plane_directional().write(os.path.join(tests, "lambert_plane_directional.gltf"))
     lambert_plane_point(occluded=False).write(os.path.join(tests, "lambert_plane_point.gltf"))
     lambert_plane_point(occluded=True).write(os.path.join(tests, "shadowed_plane_point.gltf"))
+    masked_occluder_point().write(os.path.join(tests, "masked_occluder_point.gltf"))
     emissive_quad().write(os.path.join(tests, "emissive_quad.gltf"))
     white_furnace().write(os.path.join(tests, "white_furnace.gltf"))
     glossy_furnace().write(os.path.join(tests, "glossy_furnace.gltf"))

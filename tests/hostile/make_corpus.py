@@ -165,11 +165,11 @@ def checked_in():
     # Broken plugins: a folder of each, found through BOUNCE_PLUGIN_PATH.
     plugins = {
         "bad_json": ("BadJson", '{"Name": "BadJson", "EngineApiVersion": '),
-        "missing_library": ("MissingLib", json.dumps({"Name": "MissingLib", "EngineApiVersion": 2,
+        "missing_library": ("MissingLib", json.dumps({"Name": "MissingLib", "EngineApiVersion": 3,
                                                       "Library": "bounce_missing_lib", "EnabledByDefault": False})),
         "wrong_api": ("WrongApi", json.dumps({"Name": "WrongApi", "EngineApiVersion": 999,
                                               "Library": "bounce_wrong_api", "EnabledByDefault": False})),
-        "not_a_library": ("NotALib", json.dumps({"Name": "NotALib", "EngineApiVersion": 2,
+        "not_a_library": ("NotALib", json.dumps({"Name": "NotALib", "EngineApiVersion": 3,
                                                  "Library": "bounce_not_a_lib", "EnabledByDefault": False})),
     }
     for folder, (name, text) in plugins.items():

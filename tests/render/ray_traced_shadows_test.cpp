@@ -68,13 +68,44 @@ class RayTracedShadows : public RenderFixture {
   }
 };
 
-TEST_F(RayTracedShadows, PointLightShadowMatchesEmbreePixelForPixelAndClosedForm) {
-  // Looking straight down from 3 m with a 1.4 rad field of view: the whole 4 m plane, the
-  // occluder's 2 m shadow on it and the lit ring around that.
+/// The top camera of the analytic planes: straight down from 3 m, a 1.4 rad field of view.
+Camera topCamera() {
   Camera top;
   top.yfov = 1.4f;
   top.world = glm::translate(glm::mat4(1.0f), {0.0f, 3.0f, 0.0f}) *
               glm::rotate(glm::mat4(1.0f), -0.5f * glm::pi<float>(), {1.0f, 0.0f, 0.0f});
+  return top;
+}
+
+/// Of the plane's pixels in the ring 0.7 m < max(|x|, |z|) < 0.95 m (inside the 1 m
+/// shadow of masked_occluder_point.gltf's quad, outside the 0.5 m quad as the camera sees
+/// it, 0.6 m on the plane), the fraction darker than half the unshadowed closed form.
+double darkFractionUnderTheQuad(const ImageBuffer& direct, const Camera& camera) {
+  const FrameView v = FrameView::fromCamera(camera, direct.width, direct.height);
+  size_t ring = 0, dark = 0;
+  for (uint32_t y = 0; y < direct.height; ++y)
+    for (uint32_t x = 0; x < direct.width; ++x) {
+      const glm::vec2 ndc((float(x) + 0.5f) / float(direct.width) * 2.0f - 1.0f,
+                          (float(y) + 0.5f) / float(direct.height) * 2.0f - 1.0f);
+      const glm::vec4 a = v.inverseViewProjection * glm::vec4(ndc, 0.0f, 1.0f);
+      const glm::vec4 b = v.inverseViewProjection * glm::vec4(ndc, 0.5f, 1.0f);
+      const glm::vec3 o = glm::vec3(a) / a.w, dir = glm::normalize(glm::vec3(b) / b.w - o);
+      const glm::vec3 p = o + (-o.y / dir.y) * dir;
+      const float m = std::max(std::abs(p.x), std::abs(p.z));
+      if (m < 0.7f || m > 0.95f) continue;
+      const glm::vec3 toLight = glm::vec3(0.0f, 1.0f, 0.0f) - p;
+      const float r2 = glm::dot(toLight, toLight);
+      const float lit = kAlbedo * 4.0f * (toLight.y / std::sqrt(r2)) / (glm::pi<float>() * r2);
+      ++ring;
+      if (direct.at(x, y, 0) < 0.5f * lit) ++dark;
+    }
+  return ring ? double(dark) / double(ring) : 0.0;
+}
+
+TEST_F(RayTracedShadows, PointLightShadowMatchesEmbreePixelForPixelAndClosedForm) {
+  // Looking straight down from 3 m with a 1.4 rad field of view: the whole 4 m plane, the
+  // occluder's 2 m shadow on it and the lit ring around that.
+  const Camera top = topCamera();
   const auto [traced, reference] = directAndReference("content/tests/shadowed_plane_point.gltf", 64, &top);
   const Disagreement d = disagreement(traced, reference);
   std::printf("point light over an occluder: %zu of %zu pixels differ, %zu shadowed\n", d.differ, d.pixels,
@@ -100,6 +131,49 @@ TEST_F(RayTracedShadows, PointLightShadowMatchesEmbreePixelForPixelAndClosedForm
       ++lit;
     }
   EXPECT_GT(lit, 1000u);
+}
+
+TEST_F(RayTracedShadows, AlphaMaskedQuadCastsTheShadowEmbreeCasts) {
+  // A 1 m quad half way to the light, alpha-masked as a checker of 2-texel squares (alpha
+  // 1 and 0, cutoff 0.5). Rays must pass its transparent squares (the traversal reads the
+  // texture's alpha per hit) and the camera must see the plane through them: pixel for
+  // pixel as Embree's filter function cuts it out, and half the quad's shadow lit.
+  const Camera top = topCamera();
+  const auto [traced, reference] = directAndReference("content/tests/masked_occluder_point.gltf", 96, &top);
+  const Disagreement d = disagreement(traced, reference);
+  const double tracedDark = darkFractionUnderTheQuad(traced, top);
+  const double referenceDark = darkFractionUnderTheQuad(reference, top);
+  std::printf("masked quad: %zu of %zu pixels differ, %zu shadowed; under the quad %.3f dark (Embree %.3f)\n",
+              d.differ, d.pixels, d.shadowed, tracedDark, referenceDark);
+  EXPECT_LE(double(d.differ), 0.005 * double(d.pixels));
+  // A checker: about half dark. An opaque quad would darken all of it, an ignored one none.
+  EXPECT_GT(referenceDark, 0.3);
+  EXPECT_LT(referenceDark, 0.7);
+  EXPECT_NEAR(tracedDark, referenceDark, 0.01);
+}
+
+TEST_F(RayTracedShadows, ShadowMapsCutOutTheSameTexels) {
+  // The same quad in the shadow maps (r.RayTracing.Shadows 0): masked casters are drawn
+  // with a fragment shader that discards what the G-buffer discards. The maps' filter
+  // softens each square's edge over a few pixels, so the comparison is the dark fraction
+  // under the quad, not pixel for pixel.
+  const Camera top = topCamera();
+  start("content/tests/masked_occluder_point.gltf");
+  const ImageBuffer maps = render(FrameView::fromCamera(top, 96, 96), {"direct"}).images.at("direct");
+  for (const char* line :
+       {"r.Reference.SamplesPerPixel 1", "r.Reference.PixelFilter Center", "r.Reference.MaxBounces 0",
+        "r.Reference.ShowProgress 0", "r.GI.Technique Reference"})
+    engine->console().execute(line);
+  const ImageBuffer reference = render(FrameView::fromCamera(top, 96, 96), {"direct"}).images.at("direct");
+  const double mapsDark = darkFractionUnderTheQuad(maps, top);
+  const double referenceDark = darkFractionUnderTheQuad(reference, top);
+  const ImageErrorStats e = compareImages(maps, reference);
+  std::printf("masked quad, shadow maps: %.3f dark under the quad (Embree %.3f); relative RMSE %.4f\n",
+              mapsDark, referenceDark, e.relativeRmse);
+  EXPECT_NEAR(mapsDark, referenceDark, 0.05);
+  // The filter's soft edges: measured 0.17 (an opaque quad's shadow reads 0.90).
+  EXPECT_LT(e.relativeRmse, 0.3);
+  EXPECT_EQ(maps.nonFiniteCount(), 0u);
 }
 
 TEST_F(RayTracedShadows, SunThroughAWindowMatchesEmbreeWhereTheShadowMapBlurs) {

@@ -3,7 +3,7 @@
 // the engine's GLSL ray-tracing library; hits are read back and compared with Embree.
 // SHADE (a define): 0 none; 1 directLightAt at each hit (a shadow ray per light);
 // 2 the same with the shadow maps for visibility.
-#define RAY_TRACING_BINDING 0
+#define RAY_TRACING_BINDING 10  // 10..15
 #include "bounce/ray_tracing.glsl"
 #include "bounce/lights.glsl"
 #if SHADE == 2

@@ -122,6 +122,8 @@ void GpuScene::uploadGeometry(const Scene& scene, bool simplifiedMeshes) {
       d.indexCount = r.indexCount;
       d.vertexOffset = r.vertexOffset;
       d.doubleSided = d.material < scene.materials().size() && scene.materials()[d.material].doubleSided;
+      d.alphaMasked =
+          d.material < scene.materials().size() && scene.materials()[d.material].alphaMode == AlphaMode::Mask;
       d.objectBounds = mesh.primitives[p].bounds;
       d.worldBounds = d.objectBounds.transformed(inst.world);
       d.worldScale = largestAxisScale(inst.world);

@@ -27,27 +27,32 @@ RayTracingScenePass::RayTracingScenePass(const RendererSettings& settings, const
       triangles_(std::string(channels::RayTracingTriangles), {64}),
       attributes_(std::string(channels::RayTracingAttributes), {64}),
       instances_(std::string(channels::RayTracingInstances), {64}),
-      materials_(std::string(channels::RayTracingMaterials), {64}) {}
+      materials_(std::string(channels::RayTracingMaterials), {64}),
+      alphaMasks_(std::string(channels::RayTracingAlphaMasks), {64}) {}
 
 RayTracingScenePass::~RayTracingScenePass() = default;
 
-std::array<const void*, 5> RayTracingScenePass::allocations() const {
-  return {nodes_.allocation(), triangles_.allocation(), attributes_.allocation(), instances_.allocation(),
-          materials_.allocation()};
+std::array<const void*, 6> RayTracingScenePass::allocations() const {
+  return {nodes_.allocation(),     triangles_.allocation(), attributes_.allocation(),
+          instances_.allocation(), materials_.allocation(), alphaMasks_.allocation()};
 }
 
 void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
   // Sizes are upper bounds known before building (the graph declares buffers before
-  // any pass records), so they change only when the scene's geometry does.
-  if (&frame.scene != capacityScene_ || frame.scene.revision(SceneChange::Geometry) != capacityRevision_) {
+  // any pass records), so they change only when the scene's geometry or materials do
+  // (an alpha-masked material's texture sets the alpha-mask buffer's size).
+  if (&frame.scene != capacityScene_ || frame.scene.revision(SceneChange::Geometry) != capacityGeometry_ ||
+      frame.scene.revision(SceneChange::Material) != capacityMaterials_) {
     const rt::Capacity cap = rt::RayTracingScene::capacity(frame.scene);
     nodes_.setDesc({bufferBytes(cap.nodes, sizeof(rt::RtNode))});
     triangles_.setDesc({bufferBytes(cap.triangles, sizeof(rt::RtTriangle))});
     attributes_.setDesc({bufferBytes(cap.triangles, sizeof(rt::RtTriangleAttributes))});
     instances_.setDesc({bufferBytes(cap.instances, sizeof(rt::RtInstance), sizeof(rt::RtCounts))});
     materials_.setDesc({bufferBytes(cap.materials, sizeof(rt::RtMaterial))});
+    alphaMasks_.setDesc({bufferBytes(cap.alphaMaskWords, sizeof(uint32_t))});
     capacityScene_ = &frame.scene;
-    capacityRevision_ = frame.scene.revision(SceneChange::Geometry);
+    capacityGeometry_ = frame.scene.revision(SceneChange::Geometry);
+    capacityMaterials_ = frame.scene.revision(SceneChange::Material);
   }
 
   Blackboard& bb = g.blackboard();
@@ -64,22 +69,24 @@ void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
     const BufferHandle attributes = b.write(g.importBuffer(attributes_), Access::TransferDst);
     const BufferHandle instances = b.write(g.importBuffer(instances_), Access::TransferDst);
     const BufferHandle materials = b.write(g.importBuffer(materials_), Access::TransferDst);
+    const BufferHandle alphaMasks = b.write(g.importBuffer(alphaMasks_), Access::TransferDst);
     bb.setBuffer(channels::RayTracingNodes, nodes);
     bb.setBuffer(channels::RayTracingTriangles, triangles);
     bb.setBuffer(channels::RayTracingAttributes, attributes);
     bb.setBuffer(channels::RayTracingInstances, instances);
     bb.setBuffer(channels::RayTracingMaterials, materials);
+    bb.setBuffer(channels::RayTracingAlphaMasks, alphaMasks);
     b.whenUnread("no pass traces rays");
     b.condition([this, &scene, backendText] {
       const std::string work = scene_.pendingWork(scene);
-      const std::array<const void*, 5> now = allocations();
+      const std::array<const void*, 6> now = allocations();
       if (!work.empty()) return PassDecision::run("builds " + work + "; " + backendText);
       if (now != uploadedTo_)
         return PassDecision::run("uploads the acceleration structure (buffers re-created); " + backendText);
       return PassDecision::run("up to date, nothing to build; " + backendText);
     });
     return [=, this, &scene](PassContext& ctx) {
-      const std::array<const void*, 5> now = allocations();
+      const std::array<const void*, 6> now = allocations();
       rt::RayTracingScene::Changed changed = scene_.update(scene);
       if (now != uploadedTo_) changed = {true, true, true};
       uploadedTo_ = now;
@@ -98,7 +105,10 @@ void RayTracingScenePass::declare(RenderGraph& g, const FrameContext& frame) {
         upload(nodes, scene_.nodes(), scene_.bottomNodeCount());
       }
       if (changed.topLevel) upload(instances, scene_.instanceBuffer());
-      if (changed.materials) upload(materials, scene_.materials());
+      if (changed.materials) {
+        upload(materials, scene_.materials());
+        upload(alphaMasks, scene_.alphaMasks());
+      }
       const uint64_t triangleCount = scene_.triangles().size();
       // Building bottom levels is news (a scene loaded, a mesh edited); a top level rebuilt
       // for a moving object is not, and would repeat every frame.

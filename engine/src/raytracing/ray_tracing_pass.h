@@ -28,13 +28,13 @@ class RayTracingScenePass {
   gpu::DeviceFeatures device_;
   rt::RayTracingScene scene_;
   int32_t warnedBackend_ = -1;  ///< the setting last warned about
-  PersistentBuffer nodes_, triangles_, attributes_, instances_, materials_;
+  PersistentBuffer nodes_, triangles_, attributes_, instances_, materials_, alphaMasks_;
   /// The buffers' allocations now; the last upload's: a re-created buffer needs everything again.
-  std::array<const void*, 5> allocations() const;
-  std::array<const void*, 5> uploadedTo_{};
-  /// Capacity of the scene at the geometry revision it was computed for.
+  std::array<const void*, 6> allocations() const;
+  std::array<const void*, 6> uploadedTo_{};
+  /// Capacity of the scene at the geometry and material revisions it was computed for.
   const Scene* capacityScene_ = nullptr;
-  uint64_t capacityRevision_ = ~0ull;
+  uint64_t capacityGeometry_ = ~0ull, capacityMaterials_ = ~0ull;
 };
 
 }  // namespace bounce

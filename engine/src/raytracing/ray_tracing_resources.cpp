@@ -14,6 +14,7 @@ RayTracingSceneHandles readRayTracingScene(PassBuilder& b, const Blackboard& bb)
   h.attributes = read(channels::RayTracingAttributes);
   h.instances = read(channels::RayTracingInstances);
   h.materials = read(channels::RayTracingMaterials);
+  h.alphaMasks = read(channels::RayTracingAlphaMasks);
   return h;
 }
 
@@ -22,7 +23,8 @@ gpu::Bindings& bindRayTracingScene(gpu::Bindings& bindings, const RayTracingScen
       .buffer("RtTriangleBuffer", h.triangles)
       .buffer("RtAttributeBuffer", h.attributes)
       .buffer("RtInstanceBuffer", h.instances)
-      .buffer("RtMaterialBuffer", h.materials);
+      .buffer("RtMaterialBuffer", h.materials)
+      .buffer("RtAlphaMaskBuffer", h.alphaMasks);
 }
 
 SceneLightHandles readSceneLights(PassBuilder& b, const Blackboard& bb) {

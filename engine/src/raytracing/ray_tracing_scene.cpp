@@ -78,13 +78,14 @@ Capacity RayTracingScene::capacity(const Scene& scene) {
   c.instances = scene.instances().size();
   c.nodes += c.instances + 1;
   c.materials = scene.materials().size();
+  c.alphaMaskWords = alphaMaskWords(scene);
   return c;
 }
 
 uint64_t RayTracingScene::bytes() const {
   return nodes_.size() * sizeof(RtNode) + triangles_.size() * sizeof(RtTriangle) +
          attributes_.size() * sizeof(RtTriangleAttributes) + instanceBuffer_.size() +
-         materials_.size() * sizeof(RtMaterial);
+         materials_.size() * sizeof(RtMaterial) + alphaMasks_.size() * sizeof(uint32_t);
 }
 
 std::string RayTracingScene::pendingWork(const Scene& scene) const {
@@ -317,17 +318,24 @@ glm::vec4 RayTracingScene::textureMean(const Scene& scene, const TextureRef& ref
 
 void RayTracingScene::buildMaterials(const Scene& scene) {
   materials_.clear();
-  for (const Material& m : scene.materials()) {
+  AlphaMasks masks = packAlphaMasks(scene);
+  alphaMasks_ = std::move(masks.words);
+  for (size_t i = 0; i < scene.materials().size(); ++i) {
+    const Material& m = scene.materials()[i];
     RtMaterial r{};
-    const glm::vec4 base = m.baseColorFactor * textureMean(scene, m.baseColorTexture, true);
+    glm::vec4 base = m.baseColorFactor * textureMean(scene, m.baseColorTexture, true);
+    // A hit on a masked material reads its texture's alpha itself (the mean would cut out
+    // all or nothing): the stored alpha is then the factor alone.
+    if (masks.firstWord[i] != 0) base.a = m.baseColorFactor.a;
     r.baseColor = glm::vec4(
         glm::clamp(glm::vec3(finiteOr(base.r, 0.0f), finiteOr(base.g, 0.0f), finiteOr(base.b, 0.0f)), 0.0f,
                    1.0f),
-        glm::clamp(finiteOr(base.a, 1.0f), 0.0f, 1.0f));
+        // Not clamped above 1: the cutoff compares factor × texture, as gbuffer.frag does.
+        std::max(finiteOr(base.a, 1.0f), 0.0f));
     const glm::vec3 emission = m.emission() * glm::vec3(textureMean(scene, m.emissiveTexture, true));
     r.emission =
         glm::vec4(std::max(finiteOr(emission.r, 0.0f), 0.0f), std::max(finiteOr(emission.g, 0.0f), 0.0f),
-                  std::max(finiteOr(emission.b, 0.0f), 0.0f), 0.0f);
+                  std::max(finiteOr(emission.b, 0.0f), 0.0f), uintBits(masks.firstWord[i]));
     const glm::vec4 mr = textureMean(scene, m.metallicRoughnessTexture, false);  // G roughness, B metallic
     r.params = glm::vec4(std::clamp(finiteOr(m.roughnessFactor * mr.g, 1.0f), 0.0f, 1.0f),
                          std::clamp(finiteOr(m.metallicFactor * mr.b, 1.0f), 0.0f, 1.0f),

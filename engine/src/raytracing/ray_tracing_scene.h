@@ -6,6 +6,7 @@
 
 #include "bounce/raytracing/ray_tracing_layout.h"
 #include "bounce/scene/scene.h"
+#include "raytracing/alpha_masks.h"
 #include "raytracing/bvh_build.h"
 
 #include <cstdint>
@@ -30,6 +31,7 @@ struct BuildStats {
 /// Sizes of the packed arrays, in elements.
 struct Capacity {
   uint64_t nodes = 0, triangles = 0, instances = 0, materials = 0;
+  uint64_t alphaMaskWords = 1;  ///< depends on the materials too
 };
 
 class RayTracingScene {
@@ -47,7 +49,7 @@ class RayTracingScene {
   struct Changed {
     bool bottomLevels = false;  ///< nodes [0, bottomNodeCount()), triangles, attributes
     bool topLevel = false;      ///< nodes from bottomNodeCount(), the instance buffer
-    bool materials = false;
+    bool materials = false;     ///< the material table and the alpha masks
     bool any() const { return bottomLevels || topLevel || materials; }
   };
   /// Rebuilds what is out of date and re-packs the arrays. Throws std::runtime_error
@@ -65,6 +67,8 @@ class RayTracingScene {
   /// The instance buffer: RtCounts first, then the instances.
   const std::vector<uint8_t>& instanceBuffer() const { return instanceBuffer_; }
   const std::vector<RtMaterial>& materials() const { return materials_; }
+  /// The alpha-mask buffer's words (bounce/raytracing/ray_tracing_layout.h).
+  const std::vector<uint32_t>& alphaMasks() const { return alphaMasks_; }
   const RtCounts& counts() const { return counts_; }
   /// Nodes of all bottom levels; the top level's nodes follow.
   uint32_t bottomNodeCount() const { return bottomNodeCount_; }
@@ -99,6 +103,7 @@ class RayTracingScene {
   std::vector<RtTriangleAttributes> attributes_;
   std::vector<uint8_t> instanceBuffer_;
   std::vector<RtMaterial> materials_;
+  std::vector<uint32_t> alphaMasks_{0u};
   uint32_t bottomNodeCount_ = 0;
   RtCounts counts_;
   BuildStats stats_;

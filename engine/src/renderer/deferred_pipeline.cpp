@@ -159,16 +159,26 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
       // Both faces cast: single-sided walls must still block light from behind.
       pd.cullMode = VK_CULL_MODE_NONE;
       pd.depthBias = true;
-      const gpu::Pipeline& pipeline = ctx.pipelines().graphics(pd);
+      // Opaque casters need no fragment shader; alpha-masked ones discard what the G-buffer does.
+      const gpu::Pipeline& opaque = ctx.pipelines().graphics(pd);
+      const bool anyMasked = std::ranges::any_of(ctx.scene().draws(), &gpu::GpuDraw::alphaMasked);
+      pd.fragment = shader("shadow_depth_masked.frag");
+      const gpu::Pipeline* masked = anyMasked ? &ctx.pipelines().graphics(pd) : nullptr;
       gpu::Bindings common;
       common.buffer("SceneInstances", ctx.scene().instances());
+      gpu::Bindings maskedCommon = common;
+      maskedCommon.buffer("SceneMaterials", ctx.scene().materials());
       for (uint32_t layer = 0; layer < layers; ++layer) {
         ctx.beginRendering({.depth = DepthTarget{maps, 1.0f}, .layer = layer});
         // Slope-scaled bias in depth units per texel of slope, plus one unit of depth
         // resolution: removes acne without visibly detaching contact shadows.
         vkCmdSetDepthBias(ctx.cmd(), 1.0f, 0.0f, slopeBias);
         glm::mat4 m = lights->shadowMatrices[layer];
-        ctx.drawScene(pipeline, common, {}, &m, sizeof(m));
+        ctx.drawScene(
+            opaque, common, [](const gpu::GpuDraw& d) { return !d.alphaMasked; }, &m, sizeof(m));
+        if (masked)
+          ctx.drawScene(
+              *masked, maskedCommon, [](const gpu::GpuDraw& d) { return d.alphaMasked; }, &m, sizeof(m));
         ctx.endRendering();
       }
       // Each layer's depth cleared and stored once (overdraw's depth tests not counted).

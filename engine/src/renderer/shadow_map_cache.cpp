@@ -13,6 +13,10 @@ uint64_t ShadowMapCache::key(const Scene& scene, const std::vector<glm::mat4>& s
       .add(scene.revision(SceneChange::Geometry))
       .add(scene.revision(SceneChange::Transform))
       .add(scene.triangleCount());
+  // Coverage of alpha-masked casters (another colour changes no shadow).
+  for (const Material& m : scene.materials())
+    if (m.alphaMode == AlphaMode::Mask)
+      h.add(m.alphaCutoff).add(m.baseColorFactor.a).add(m.baseColorTexture.texture);
   const Aabb bounds = scene.bounds();
   for (int axis = 0; axis < 3; ++axis) h.add(bounds.min[axis]).add(bounds.max[axis]);
   h.add(mapSize).add(slopeBias).add(shadowMatrices.size());

@@ -6,7 +6,7 @@
 // the probes' previous irradiance (the infinite bounce).
 #define DDGI_VOLUME_BINDING 0
 #include "ddgi/irradiance.glsl"
-#define RAY_TRACING_BINDING 4
+#define RAY_TRACING_BINDING 12  // 12..17
 #include "bounce/ray_tracing.glsl"
 #include "bounce/lights.glsl"
 LIGHTS(9)

@@ -16,7 +16,7 @@
 // gathers only the VPLs i ≡ (x mod k) + k (y mod k) (mod k²), scaled by k², and
 // VPL.Deinterleave averages each k×k window, which holds every residue once, where the
 // surface is continuous: k² times fewer shadow rays.
-#define RAY_TRACING_BINDING 0
+#define RAY_TRACING_BINDING 10  // 10..15
 #include "bounce/ray_tracing.glsl"
 #include "bounce/gbuffer.glsl"
 #include "vpl/common.glsl"

@@ -12,7 +12,7 @@
 // area × power, the CPU's table), a uniform point on it and a cosine-distributed direction
 // from its emitting face, leaves a VPL right there (the surface's own light, which the
 // engine's lighting pass does not spread), and goes on like any other path.
-#define RAY_TRACING_BINDING 0
+#define RAY_TRACING_BINDING 11  // 11..16
 #include "bounce/ray_tracing.glsl"
 #include "bounce/lights.glsl"
 LIGHTS(5)

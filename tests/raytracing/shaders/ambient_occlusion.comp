@@ -3,7 +3,7 @@
 // ("Tracing rays"), run by tests/raytracing/ambient_occlusion_example_test.cpp. One
 // invocation per pixel traces `raysPerPixel` cosine-weighted visibility rays of length
 // `radius` and writes the unoccluded fraction (1: open sky, 0: enclosed).
-#define RAY_TRACING_BINDING 0
+#define RAY_TRACING_BINDING 8  // 8..13
 #include "bounce/ray_tracing.glsl"
 #include "bounce/gbuffer.glsl"
 

@@ -3,7 +3,7 @@
 // mode 0: closest hit; 1: any hit; 2: closest hit, then directLightAt at the surface;
 // 3: closest hit, then the surface's shading normal; 4: closest hit, then the direct
 // light with the engine's shadow maps for visibility.
-#define RAY_TRACING_BINDING 0
+#define RAY_TRACING_BINDING 11  // 11..16
 #define RAY_TRACING_DEBUG_COUNTERS_BINDING 9
 #include "bounce/ray_tracing.glsl"
 #include "bounce/lights.glsl"

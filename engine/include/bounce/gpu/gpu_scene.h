@@ -60,6 +60,7 @@ struct GpuDraw {
   uint32_t indexCount = 0;
   int32_t vertexOffset = 0;
   bool doubleSided = false;
+  bool alphaMasked = false;  ///< glTF alphaMode MASK: coverage from the base colour's alpha
   Aabb objectBounds;
   Aabb worldBounds;
   /// Coarser versions of the primitive (meshoptimizer), finest first; passes that

@@ -29,6 +29,7 @@ inline constexpr std::string_view RayTracingTriangles = "rt.triangles";
 inline constexpr std::string_view RayTracingAttributes = "rt.attributes";
 inline constexpr std::string_view RayTracingInstances = "rt.instances";
 inline constexpr std::string_view RayTracingMaterials = "rt.materials";
+inline constexpr std::string_view RayTracingAlphaMasks = "rt.alphaMasks";
 
 // GI channels (published by plugins), view-sized, linear HDR.
 /// Indirect diffuse irradiance E in W/m² arriving at the visible surface (RGBA16F);

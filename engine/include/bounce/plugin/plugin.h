@@ -16,7 +16,7 @@ namespace bounce {
 
 /// Version of the plugin API in this header. Bumped on any incompatible change; the
 /// engine refuses plugins built against another version.
-inline constexpr uint32_t kPluginApiVersion = 2;
+inline constexpr uint32_t kPluginApiVersion = 3;
 
 class PluginContext;
 

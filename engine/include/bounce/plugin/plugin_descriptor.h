@@ -3,7 +3,7 @@
 //
 //   { "FileVersion": 1, "Name": "Ambient", "FriendlyName": "Constant ambient",
 //     "Version": 1, "VersionName": "0.1", "Description": "...",
-//     "Category": "GlobalIllumination", "EngineApiVersion": 2,
+//     "Category": "GlobalIllumination", "EngineApiVersion": 3,
 //     "Library": "bounce_ambient", "Dependencies": [], "EnabledByDefault": true,
 //     "ConfigSection": "Ambient", "ConsoleVariablePrefix": "r.Ambient." }
 //

@@ -27,9 +27,10 @@
 namespace bounce {
 
 struct RayTracingSceneHandles {
-  BufferHandle nodes, triangles, attributes, instances, materials;
+  BufferHandle nodes, triangles, attributes, instances, materials, alphaMasks;
   bool valid() const {
-    return nodes.valid() && triangles.valid() && attributes.valid() && instances.valid() && materials.valid();
+    return nodes.valid() && triangles.valid() && attributes.valid() && instances.valid() &&
+           materials.valid() && alphaMasks.valid();
   }
 };
 
@@ -37,7 +38,7 @@ struct RayTracingSceneHandles {
 /// handles when the frame has none (a graph built without a device).
 RayTracingSceneHandles readRayTracingScene(PassBuilder& builder, const Blackboard& blackboard);
 
-/// Binds the five buffers under the block names bounce/ray_tracing.glsl declares.
+/// Binds the six buffers under the block names bounce/ray_tracing.glsl declares.
 gpu::Bindings& bindRayTracingScene(gpu::Bindings& bindings, const RayTracingSceneHandles& handles);
 
 /// The traversal bounce/ray_tracing.glsl runs on a device with `features` under the

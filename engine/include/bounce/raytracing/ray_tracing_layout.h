@@ -72,12 +72,24 @@ struct RtCounts {
 
 /// Material as a ray hit sees it. Textures are not bound per hit: base colour, emission,
 /// roughness and metalness are the factors times the texture's mean (computed once when
-/// the material changes).
+/// the material changes). The one exception is coverage: an alpha-masked material's hits
+/// read its base-colour alpha per hit from the alpha-mask buffer (below), so cut-out
+/// leaves and fences let rays through where the rasterizer discards.
 struct RtMaterial {
-  glm::vec4 baseColor;  ///< rgb: linear albedo, a: alpha
-  glm::vec4 emission;   ///< rgb: radiance W/(m²·sr)
+  glm::vec4 baseColor;  ///< rgb: linear albedo; a: alpha (masked with a texture: the factor alone)
+  glm::vec4 emission;   ///< rgb: radiance W/(m²·sr); w: alpha mask's first word (uint bits, 0: none)
   glm::vec4 params;     ///< x: roughness, y: metallic, z: alpha cutoff (< 0: opaque), w: 1 if double-sided
 };
 static_assert(sizeof(RtMaterial) == 48);
+
+/// The alpha-mask buffer: uint words. Word 0 is unused (0 means "no mask" in
+/// RtMaterial::emission.w). Each alpha-masked base-colour texture is stored once, at a
+/// word index `first`: [first] width, [first + 1] height, then width × height alpha bytes,
+/// four per word, row-major from the top-left texel (byte i in bits 8·(i mod 4)). Read
+/// bilinearly with repeat wrapping, as the rasterizer's sampler reads mip 0.
+inline constexpr uint32_t kAlphaMaskHeaderWords = 2;
+/// Largest side stored: a bigger texture is halved (alpha box-filtered) until it fits,
+/// so one mask is at most 4 MiB (masks are coverage, not detail).
+inline constexpr uint32_t kAlphaMaskMaxSide = 2048;
 
 }  // namespace bounce::rt

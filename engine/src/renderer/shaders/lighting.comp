@@ -28,7 +28,7 @@ layout(binding = 12, rgba16f) uniform writeonly image2D outDirect;
 
 #include "bounce/shadows.glsl"
 #ifdef RAY_TRACED_SHADOWS
-#define RAY_TRACING_BINDING 14
+#define RAY_TRACING_BINDING 14  // 14..19
 #include "bounce/ray_tracing.glsl"
 #endif
 

@@ -2,7 +2,7 @@
 // (bounce/raytracing/ray_tracing_layout.h), traversed in software, so it runs on
 // lavapipe and on every GPU.
 //
-//   #define RAY_TRACING_BINDING 2      // five storage buffers from this binding on
+//   #define RAY_TRACING_BINDING 2      // six storage buffers from this binding on
 //   #include "bounce/ray_tracing.glsl"
 //   RayHit h = traceClosestHit(origin, direction, 0.0, 1e30);
 //   if (h.hit) { RtSurface s = surfaceAt(h, direction); ... }
@@ -13,13 +13,15 @@
 //
 // Rays: `direction` need not be unit length (t is in its units); a NaN/Inf/zero
 // direction, a NaN origin or tMin > tMax is a miss. Hits are accepted for tMin < t < tMax.
+// Alpha-masked materials (glTF alphaMode MASK) are cut out where their base-colour alpha
+// is below the cutoff, as the rasterizer discards: rays pass through leaves and fences.
 // Define RAY_TRACING_DEBUG_COUNTERS_BINDING to count stack overflows and step-limit
 // hits (RtDebugCounters { uint stackOverflows; uint stepLimits; }).
 #ifndef BOUNCE_RAY_TRACING_GLSL
 #define BOUNCE_RAY_TRACING_GLSL
 
 #ifndef RAY_TRACING_BINDING
-#error "define RAY_TRACING_BINDING (the first of five bindings) before including bounce/ray_tracing.glsl"
+#error "define RAY_TRACING_BINDING (the first of six bindings) before including bounce/ray_tracing.glsl"
 #endif
 
 #include "bounce/common.glsl"
@@ -49,8 +51,8 @@ struct RtInstance {
   uint mesh;
 };
 struct RtMaterial {
-  vec4 baseColor;  // rgb: albedo (factor x mean texture colour), a: alpha
-  vec4 emission;   // rgb: radiance W/(m2 sr)
+  vec4 baseColor;  // rgb: albedo (factor x mean texture colour), a: alpha (masked: the factor)
+  vec4 emission;   // rgb: radiance W/(m2 sr), w: first word of the alpha mask (uint bits, 0: none)
   vec4 params;     // x: roughness, y: metallic, z: alpha cutoff (< 0 opaque), w: 1 double-sided
 };
 
@@ -64,6 +66,8 @@ layout(std430, binding = RAY_TRACING_BINDING + 3) readonly buffer RtInstanceBuff
   RtInstance rtInstances[];
 };
 layout(std430, binding = RAY_TRACING_BINDING + 4) readonly buffer RtMaterialBuffer { RtMaterial rtMaterials[]; };
+// Alpha masks: per texture [width, height, alpha bytes four to a word] (ray_tracing_layout.h).
+layout(std430, binding = RAY_TRACING_BINDING + 5) readonly buffer RtAlphaMaskBuffer { uint rtAlphaMasks[]; };
 
 #ifdef RAY_TRACING_DEBUG_COUNTERS_BINDING
 layout(std430, binding = RAY_TRACING_DEBUG_COUNTERS_BINDING) buffer RtDebugCounters {
@@ -186,6 +190,49 @@ bool rtIntersectTriangle(RtRay r, RtTriangle tri, float tMin, float tMax, out fl
   return true;
 }
 
+// Alpha of mask texel (x, y), both already wrapped into range.
+float rtMaskTexel(uint first, uint width, uint x, uint y) {
+  uint i = y * width + x;
+  return float((rtAlphaMasks[first + 2u + (i >> 2u)] >> (8u * (i & 3u))) & 255u) * (1.0 / 255.0);
+}
+
+// Repeat wrapping of texel coordinate c (integral, possibly negative or huge) into [0, size).
+uint rtWrapTexel(float c, uint size) {
+  float s = float(size);
+  // Rounding can land c - s floor(c / s) on s itself (or, beyond 2^24, anywhere): clamp.
+  return uint(clamp(c - s * floor(c / s), 0.0, s - 1.0));
+}
+
+// Whether a candidate hit on rtTriangles[p] at `bary` is cut out: its material is alpha
+// masked and alpha (factor x the texture's, bilinear on mip 0 with repeat wrapping, as
+// the rasterizer's sampler and the reference path tracer read it) is below the cutoff.
+// Opaque materials cost one load of the cutoff.
+bool rtCutOut(uint p, vec2 bary) {
+  uint material = min(floatBitsToUint(rtTriangles[p].v1.w), max(rtCounts.w, 1u) - 1u);
+  float cutoff = rtMaterials[material].params.z;
+  if (cutoff < 0.0) return false;
+  float alpha = rtMaterials[material].baseColor.a;
+  uint first = floatBitsToUint(rtMaterials[material].emission.w);
+  if (first != 0u) {
+    RtTriangleAttributes attr = rtAttributes[p];
+    vec2 uv = (1.0 - bary.x - bary.y) * attr.uv01.xy + bary.x * attr.uv01.zw + bary.y * attr.uv2.xy;
+    // A non-finite coordinate reads texel 0.
+    uv.x = isnan(uv.x) || isinf(uv.x) ? 0.0 : uv.x;
+    uv.y = isnan(uv.y) || isinf(uv.y) ? 0.0 : uv.y;
+    uint w = rtAlphaMasks[first], h = rtAlphaMasks[first + 1u];
+    // Texel centres at (i + 0.5) / size.
+    vec2 x = uv * vec2(w, h) - 0.5;
+    vec2 x0 = floor(x);
+    vec2 f = x - x0;
+    uint ax = rtWrapTexel(x0.x, w), bx = rtWrapTexel(x0.x + 1.0, w);
+    uint ay = rtWrapTexel(x0.y, h), by = rtWrapTexel(x0.y + 1.0, h);
+    float top = mix(rtMaskTexel(first, w, ax, ay), rtMaskTexel(first, w, bx, ay), f.x);
+    float bottom = mix(rtMaskTexel(first, w, ax, by), rtMaskTexel(first, w, bx, by), f.x);
+    alpha *= mix(top, bottom, f.y);
+  }
+  return alpha < cutoff;
+}
+
 vec3 rtTransformPoint(vec4 rows[3], vec3 p) {
   vec4 h = vec4(p, 1.0);
   return vec3(dot(rows[0], h), dot(rows[1], h), dot(rows[2], h));
@@ -297,7 +344,7 @@ RayHit rtTrace(vec3 origin, vec3 direction, float tMin, float tMax, bool anyHit)
         uint p = triangleBase + first + i;
         float t;
         vec2 bary;
-        if (rtIntersectTriangle(ray, rtTriangles[p], tMin, tBest, t, bary)) {
+        if (rtIntersectTriangle(ray, rtTriangles[p], tMin, tBest, t, bary) && !rtCutOut(p, bary)) {
           tBest = t;
           h.hit = true;
           h.t = t;
