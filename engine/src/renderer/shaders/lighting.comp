@@ -47,21 +47,30 @@ layout(push_constant) uniform Push {
 #ifdef RAY_TRACED_SHADOWS
 // How far a shadow ray starts off the surface, along its geometric normal. The point is
 // rebuilt from a 32-bit depth, which the rasterizer rounds and interpolates, through the
-// float inverse of a (jittered) view-projection: together they err by several units in
-// the last place of depth. Sixteen of them, measured in metres at this very pixel (far
-// from the camera a unit spans centimetres, near it micrometres), cover that: with four,
-// a sample on the Cornell box's tall box at 32² (jittered) hit its own face at t = 1.3e-5
-// and read as shadowed, while the same point at 128² was lit; with 16 no test sees a
-// self-hit and 64 changes no pixel further (tests/render/accumulated_still_test.cpp). At least
-// 2^-16 of the coordinates, the offset the path tracer and bounce/ray_tracing.glsl use at
-// exact hit points, above the rounding of the reconstruction itself.
+// float inverse of a (jittered) view-projection. Three bounds, the largest wins:
+// - four units in the last place of depth, measured in metres at this very pixel: the
+//   rounding of the depth itself, which dominates far from the camera (there a unit spans
+//   centimetres; 16 moved the breakfast room's sun-shadow edges by a pixel at 14 m);
+// - 1/64 of the pixel's footprint: the rasterizer interpolates depth with a plane
+//   equation evaluated far from a large (clipped) triangle's vertices, whose rounding
+//   grows with the depth's change per pixel and the distance to the vertices, not with
+//   the depth. Near the camera a depth unit is micrometres: with four alone, a fifth of
+//   the jittered samples of Sponza's lit gallery floor 2.5 m from the camera hit the floor
+//   itself (--accumulate 64 read 0.45 where the path tracer reads 0.61; the test
+//   AFloorBesideTheCameraDoesNotShadowItselfUnderJitter). 1/64 moves a shadow edge by at
+//   most 1/64 px over the tangent of the light's elevation above the surface;
+// - 2^-16 of the coordinates, the offset the path tracer and bounce/ray_tracing.glsl use at
+//   exact hit points, above the rounding of the reconstruction's arithmetic.
 float shadowRayOffset(vec3 P, vec2 uv, float depth) {
   // Below 1, which is infinitely far (the last float under 1 is 0x3F7FFFFF).
   float nextDepth = min(uintBitsToFloat(floatBitsToUint(depth) + 4u), uintBitsToFloat(0x3F7FFFFFu));
   float depthError = distance(worldPositionFromDepth(uv, nextDepth, pc.inverseViewProjection), P);
-  if (!(depthError < 1e30)) depthError = 0.0;  // NaN or infinite: the relative floor below
+  float footprint =
+      distance(worldPositionFromDepth(uv + vec2(1.0 / float(pc.size.x), 0.0), depth, pc.inverseViewProjection), P);
+  float rasterError = max(depthError, footprint * (1.0 / 64.0));
+  if (!(rasterError < 1e30)) rasterError = 0.0;  // NaN or infinite: the relative floor below
   vec3 a = abs(P);
-  return max(depthError, max(max(a.x, max(a.y, a.z)) * 1.52587890625e-05, 1e-6));
+  return max(rasterError, max(max(a.x, max(a.y, a.z)) * 1.52587890625e-05, 1e-6));
 }
 
 // 1 when nothing lies between `origin` (already off the surface) and the light, else 0:
