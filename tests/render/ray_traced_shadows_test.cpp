@@ -222,7 +222,7 @@ TEST_F(RayTracedShadows, SunThroughAWindowMatchesEmbreeWhereTheShadowMapBlurs) {
               e.relativeRmse);
   EXPECT_GT(d.shadowed, 2000u);
   EXPECT_LE(double(d.differ), 0.005 * double(d.pixels));
-  // The shadow map's filter ramp reads 0.31 here (RenderOutputs.ShadowEdgesStay...).
+  // The shadow maps' filter ramp reads 0.26 here (RenderOutputs.ShadowEdgesStay...).
   EXPECT_LT(e.relativeRmse, 0.05);
 }
 

@@ -1,9 +1,9 @@
 // Presentation: a GLFW window (under Xvfb when no display is set), a device with a
 // window surface, and a swapchain whose image is cleared, read back and presented.
 
+#include "bounce/gpu/swapchain.h"
 #include "bounce/gpu/buffer.h"
 #include "bounce/gpu/device.h"
-#include "bounce/gpu/swapchain.h"
 #include "support/x_display.h"
 
 #define GLFW_INCLUDE_VULKAN
@@ -14,7 +14,7 @@ namespace bounce::gpu {
 namespace {
 
 class SwapchainTest : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     if (!display.available()) GTEST_SKIP() << display.reason();
     ASSERT_TRUE(glfwInit()) << "glfwInit failed";
@@ -28,7 +28,8 @@ protected:
     for (uint32_t i = 0; i < count; ++i) o.instanceExtensions.push_back(names[i]);
     o.createSurface = [this](VkInstance instance) {
       VkSurfaceKHR surface = VK_NULL_HANDLE;
-      return glfwCreateWindowSurface(instance, window, nullptr, &surface) == VK_SUCCESS ? surface : VK_NULL_HANDLE;
+      return glfwCreateWindowSurface(instance, window, nullptr, &surface) == VK_SUCCESS ? surface
+                                                                                        : VK_NULL_HANDLE;
     };
     std::string error;
     device = Device::create(o, &error);
@@ -78,8 +79,8 @@ TEST_F(SwapchainTest, ClearsAndPresentsAnImage) {
   vkAllocateCommandBuffers(device->handle(), &ai, &cmd);
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   vkBeginCommandBuffer(cmd, &bi);
-  auto barrier = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src, VkAccessFlags2 srcAccess,
-                     VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
+  auto barrier = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src,
+                     VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
     VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
     b.srcStageMask = src;
     b.srcAccessMask = srcAccess;
@@ -95,19 +96,22 @@ TEST_F(SwapchainTest, ClearsAndPresentsAnImage) {
     dep.pImageMemoryBarriers = &b;
     vkCmdPipelineBarrier2(cmd, &dep);
   };
-  barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
-          VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+          VK_ACCESS_2_TRANSFER_WRITE_BIT);
   VkClearColorValue color{{0.0f, 1.0f, 0.0f, 1.0f}};
   VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   vkCmdClearColorImage(cmd, swapchain.image(index), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &color, 1, &range);
-  barrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  barrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+          VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+          VK_ACCESS_2_TRANSFER_READ_BIT);
   VkBufferImageCopy copy{};
   copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   copy.imageExtent = {320, 240, 1};
-  vkCmdCopyImageToBuffer(cmd, swapchain.image(index), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, back.handle(), 1, &copy);
-  barrier(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0,
-          VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0);
+  vkCmdCopyImageToBuffer(cmd, swapchain.image(index), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, back.handle(), 1,
+                         &copy);
+  barrier(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+          VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0);
   vkEndCommandBuffer(cmd);
   VkSemaphore rendered;
   vkCreateSemaphore(device->handle(), &si, nullptr, &rendered);

@@ -20,6 +20,25 @@ namespace {
 constexpr const char* kShaders = "engine/src/renderer/shaders/";
 gpu::ShaderSource shader(const char* file) { return {std::string(kShaders) + file, {}}; }
 
+/// Whether any of `box` may lie inside the clip volume of `m` (Vulkan's: |x|, |y| ≤ w,
+/// 0 ≤ z ≤ w): false only when all eight corners are outside one of its planes, which
+/// holds for orthographic and perspective maps alike. An empty or non-finite box is kept.
+bool inClipVolume(const glm::mat4& m, const Aabb& box) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (!std::isfinite(box.min[axis]) || !std::isfinite(box.max[axis])) return true;
+  if (box.empty()) return true;
+  bool allOutside[6] = {true, true, true, true, true, true};
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = m * glm::vec4((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
+                                      (i & 4) ? box.max.z : box.min.z, 1.0f);
+    const float planes[6] = {c.x + c.w, c.w - c.x, c.y + c.w, c.w - c.y, c.z, c.w - c.z};
+    for (int p = 0; p < 6; ++p) allOutside[p] = allOutside[p] && planes[p] < 0.0f;
+  }
+  for (bool outside : allOutside)
+    if (outside) return false;
+  return true;
+}
+
 // Shading inputs for the GI composite, in the order of lighting.comp's push constants.
 struct LightingPush {
   glm::mat4 inverseViewProjection;
@@ -93,7 +112,12 @@ EngineStages DeferredPipeline::stages(const FrameOutputs& outputs, Readbacks* re
 void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) const {
   Blackboard& bb = g.blackboard();
   const uint32_t mapSize = uint32_t(settings_.shadowMapSize.get());
-  auto lights = std::make_shared<const LightSetup>(LightSetup::build(frame.scene, mapSize));
+  // Cascades are placed from the camera alone (GI plugins' voxelization reads the
+  // whole-scene map, which does not move with it).
+  const ShadowCascades cascades{uint32_t(std::max(settings_.shadowCascades.get(), 0)),
+                                settings_.shadowCascadeExponent.get()};
+  auto lights =
+      std::make_shared<const LightSetup>(LightSetup::build(frame.scene, mapSize, frame.view, cascades));
 
   // Lights and shadow matrices, uploaded inside the frame so every reader is ordered
   // after the copy by the graph's barriers.
@@ -174,11 +198,16 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
         // resolution: removes acne without visibly detaching contact shadows.
         vkCmdSetDepthBias(ctx.cmd(), 1.0f, 0.0f, slopeBias);
         glm::mat4 m = lights->shadowMatrices[layer];
+        // Only what the layer sees: a cascade near the camera holds few of the scene's draws.
         ctx.drawScene(
-            opaque, common, [](const gpu::GpuDraw& d) { return !d.alphaMasked; }, &m, sizeof(m));
+            opaque, common,
+            [&m](const gpu::GpuDraw& d) { return !d.alphaMasked && inClipVolume(m, d.worldBounds); }, &m,
+            sizeof(m));
         if (masked)
           ctx.drawScene(
-              *masked, maskedCommon, [](const gpu::GpuDraw& d) { return d.alphaMasked; }, &m, sizeof(m));
+              *masked, maskedCommon,
+              [&m](const gpu::GpuDraw& d) { return d.alphaMasked && inClipVolume(m, d.worldBounds); }, &m,
+              sizeof(m));
         ctx.endRendering();
       }
       // Each layer's depth cleared and stored once (overdraw's depth tests not counted).

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace bounce {
 
@@ -19,9 +20,110 @@ glm::vec3 safeDirection(const glm::vec3& d) {
   return len > 1e-12f && std::isfinite(len) ? d / len : glm::vec3(0, -1, 0);
 }
 
+/// The camera as the cascades need it: where it is, its axes, the tangents of its half
+/// fields of view and its near plane. Not valid for an orthographic projection (the
+/// whole-scene map then serves alone).
+struct ViewFrustum {
+  glm::vec3 position, right, up, forward;
+  float tanX = 0.0f, tanY = 0.0f, near = 0.0f;
+  bool valid = false;
+};
+
+ViewFrustum viewFrustum(const FrameView& v) {
+  ViewFrustum f;
+  const glm::mat4& p = v.projection;  // jitter moves x and y only; z and w are the camera's
+  if (p[2][3] == 0.0f || p[0][0] == 0.0f || p[1][1] == 0.0f || p[2][2] == 0.0f) return f;
+  const glm::mat4 cameraToWorld = glm::inverse(v.view);
+  f.position = glm::vec3(cameraToWorld[3]);
+  f.right = glm::normalize(glm::vec3(cameraToWorld[0]));
+  f.up = glm::normalize(glm::vec3(cameraToWorld[1]));
+  f.forward = -glm::normalize(glm::vec3(cameraToWorld[2]));
+  f.tanX = 1.0f / std::abs(p[0][0]);
+  f.tanY = 1.0f / std::abs(p[1][1]);
+  f.near = p[3][2] / p[2][2];  // where depth is 0 (Vulkan's 0..1 depth, either far plane)
+  f.valid = std::isfinite(f.near) && f.near > 0.0f && std::isfinite(f.tanX + f.tanY) &&
+            std::isfinite(glm::dot(f.position + f.right + f.up + f.forward, glm::vec3(1.0f)));
+  return f;
+}
+
+/// An orthographic map looking along `dir` that holds the slice of the view between
+/// depths d0 and d1 where the scene is (what can receive a shadow there) and, towards the
+/// light, everything in the scene that could shade it. The square is the slice's bounds in
+/// the light's frame cut to the scene's, its side rounded up to a step of 2^(1/4) and its
+/// centre to whole texels: a moving or turning camera changes the map in steps, not every
+/// frame, and moves it by whole texels, so shadow edges stay still (no shimmering).
+glm::mat4 cascadeMatrix(const glm::vec3& dir, const ViewFrustum& f, float d0, float d1, const Aabb& scene,
+                        float texels) {
+  const glm::mat4 rotation = glm::lookAt(glm::vec3(0.0f), dir, upFor(dir));
+  auto lightSpace = [&](const glm::vec3& p) { return glm::vec3(rotation * glm::vec4(p, 1.0f)); };
+  glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  float deepest = -std::numeric_limits<float>::max();  // farthest receiver along the light
+  for (int i = 0; i < 8; ++i) {
+    const float d = (i & 4) ? d1 : d0;
+    const glm::vec3 corner = f.position + f.forward * d + f.right * (((i & 1) ? 1.0f : -1.0f) * d * f.tanX) +
+                             f.up * (((i & 2) ? 1.0f : -1.0f) * d * f.tanY);
+    const glm::vec3 l = lightSpace(corner);
+    lo = glm::min(lo, glm::vec2(l));
+    hi = glm::max(hi, glm::vec2(l));
+    deepest = std::max(deepest, -l.z);
+  }
+  // View-space z is -dot(p, dir): depth along the light. Casters between the light and
+  // the slice lie anywhere in the scene, so the near plane is the scene's nearest point.
+  glm::vec2 sceneLo(std::numeric_limits<float>::max()), sceneHi(-std::numeric_limits<float>::max());
+  float nearest = std::numeric_limits<float>::max(), sceneDeepest = -std::numeric_limits<float>::max();
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 l =
+        lightSpace(glm::vec3((i & 1) ? scene.max.x : scene.min.x, (i & 2) ? scene.max.y : scene.min.y,
+                             (i & 4) ? scene.max.z : scene.min.z));
+    sceneLo = glm::min(sceneLo, glm::vec2(l));
+    sceneHi = glm::max(sceneHi, glm::vec2(l));
+    nearest = std::min(nearest, -l.z);
+    sceneDeepest = std::max(sceneDeepest, -l.z);
+  }
+  lo = glm::max(lo, sceneLo);
+  hi = glm::min(hi, sceneHi);
+  if (!(lo.x < hi.x && lo.y < hi.y)) lo = sceneLo, hi = sceneHi;  // the slice misses the scene
+  const float extent = std::max(std::max(hi.x - lo.x, hi.y - lo.y), 1e-3f);
+  const float side = std::exp2(std::ceil(4.0f * std::log2(extent)) / 4.0f);
+  const float texel = side / texels;
+  const glm::vec2 centre = glm::floor(0.5f * (lo + hi) / texel) * texel;
+  const float farthest = std::min(deepest, sceneDeepest);
+  // A sliver either side so geometry exactly on the bounds is not clipped.
+  const float margin = 1e-3f * std::max(farthest - nearest, 0.0f) + 1e-4f;
+  return glm::ortho(centre.x - 0.5f * side, centre.x + 0.5f * side, centre.y - 0.5f * side,
+                    centre.y + 0.5f * side, nearest - margin, farthest + margin) *
+         rotation;
+}
+
+/// The view's depth range over the scene: from the near plane to the farthest corner of
+/// its bounds ahead of the camera.
+float sceneFarDepth(const ViewFrustum& f, const Aabb& scene) {
+  float far = 0.0f;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 corner((i & 1) ? scene.max.x : scene.min.x, (i & 2) ? scene.max.y : scene.min.y,
+                           (i & 4) ? scene.max.z : scene.min.z);
+    far = std::max(far, glm::dot(corner - f.position, f.forward));
+  }
+  return far;
+}
+
 }  // namespace
 
-LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize) {
+std::vector<float> cascadeSplits(float near, float far, const ShadowCascades& cascades) {
+  std::vector<float> splits;
+  const uint32_t n = std::max(cascades.count, 1u);
+  const double e = std::clamp(double(cascades.exponent), 1.0, 10.0);
+  // Slice i spans e^i units: the fractions of the depth are (e^i − 1) / (e^n − 1), or i / n for e = 1.
+  const double total = e > 1.0 + 1e-6 ? std::pow(e, double(n)) - 1.0 : double(n);
+  for (uint32_t i = 0; i <= n; ++i) {
+    const double fraction = e > 1.0 + 1e-6 ? (std::pow(e, double(i)) - 1.0) / total : double(i) / total;
+    splits.push_back(float(double(near) + (double(far) - double(near)) * fraction));
+  }
+  return splits;
+}
+
+LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize, const FrameView& view,
+                             const ShadowCascades& cascades) {
   LightSetup out;
   Aabb bounds = scene.bounds();
   if (bounds.empty()) bounds.extend(glm::vec3(0.0f));
@@ -31,6 +133,12 @@ LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize) {
   // Near planes in proportion to the scene: depth precision follows far/near.
   const float near = std::max(1e-3f * radius, 1e-3f);
   const float size = float(std::max(1u, mapSize));
+  // Cascades cover the view from its near plane to the farthest point of the scene ahead.
+  const ViewFrustum frustum = viewFrustum(view);
+  const float farDepth = frustum.valid ? sceneFarDepth(frustum, bounds) : 0.0f;
+  const bool cascaded = cascades.count > 0 && frustum.valid && farDepth > 2.0f * frustum.near;
+  const std::vector<float> splits =
+      cascaded ? cascadeSplits(frustum.near, farDepth, cascades) : std::vector<float>{};
 
   for (const Light& l : scene.lights()) {
     GpuLight g{};
@@ -46,11 +154,20 @@ LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize) {
     if (l.castShadows) {
       g.intensity.w = float(out.shadowMatrices.size());
       if (l.type == LightType::Directional) {
-        // Orthographic box around the scene's bounding sphere, looking along the light.
-        glm::mat4 view = glm::lookAt(center - dir * (2.0f * radius), center, upFor(dir));
+        // Orthographic box around the scene's bounding sphere, looking along the light:
+        // what GI plugins voxelize reads, and every point the cascades do not hold.
+        glm::mat4 lightView = glm::lookAt(center - dir * (2.0f * radius), center, upFor(dir));
         glm::mat4 proj = glm::ortho(-radius, radius, -radius, radius, 0.0f, 4.0f * radius);
-        out.shadowMatrices.push_back(proj * view);
+        out.shadowMatrices.push_back(proj * lightView);
         g.params.w = 2.0f * radius / size;  // metres per texel
+        // Then the cascades, nearest (finest) first; the shader takes the first that holds
+        // a point (params.x of them).
+        g.params.x = 0.0f;
+        g.params.y = 0.0f;
+        for (size_t i = 0; i + 1 < splits.size(); ++i) {
+          out.shadowMatrices.push_back(cascadeMatrix(dir, frustum, splits[i], splits[i + 1], bounds, size));
+          g.params.x += 1.0f;
+        }
       } else {
         const glm::vec3 toCenter = center - l.position;
         const float far = std::max(glm::length(toCenter) + radius, near * 2.0f);

@@ -42,6 +42,23 @@ RendererSettings::RendererSettings(CVarRegistry& cvars)
            .min = 0.0,
            .max = 20.0,
            .category = "Renderer|Shadows"})),
+      shadowCascades(cvars.add<int32_t>(
+          {.name = "r.Shadow.CSM.MaxCascades",
+           .defaultValue = 3,
+           .help = "Cascades of a directional light's shadow fitted to slices of the view, finest nearest "
+                   "the camera, in front of its whole-scene map (which still serves everything outside "
+                   "them and what GI plugins voxelize). 0: the whole-scene map alone.",
+           .min = 0.0,
+           .max = 4.0,
+           .category = "Renderer|Shadows"})),
+      shadowCascadeExponent(cvars.add<float>(
+          {.name = "r.Shadow.CSM.DistributionExponent",
+           .defaultValue = 3.0f,
+           .help = "Each cascade reaches this many times deeper into the view than the one before "
+                   "(Unreal's CascadeDistributionExponent); 1 splits the depth evenly.",
+           .min = 1.0,
+           .max = 10.0,
+           .category = "Renderer|Shadows"})),
       tonemapOperator(
           cvars.add<int32_t>({.name = "r.Tonemap.Operator",
                               .defaultValue = 0,

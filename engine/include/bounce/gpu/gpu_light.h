@@ -11,7 +11,10 @@ struct GpuLight {
   glm::vec4
       directionType;    ///< xyz: direction the light travels (unit); w: type (0 directional, 1 point, 2 spot)
   glm::vec4 intensity;  ///< rgb: colour × intensity (radiometric); w: first shadow layer, -1 for none
-  glm::vec4 params;     ///< cos inner, cos outer, shadow depth bias (m, along the light), shadow texel size at 1 m
+  /// Spot: cos inner, cos outer; directional: x the view-fitted cascades after its
+  /// whole-scene map. z: shadow depth bias (m, along the light); w: shadow texel size at
+  /// 1 m (in metres for a directional light's whole-scene map).
+  glm::vec4 params;
 };
 static_assert(sizeof(GpuLight) == 64);
 

@@ -8,8 +8,14 @@ namespace bounce {
 struct RendererSettings {
   explicit RendererSettings(CVarRegistry& cvars);
 
-  CVarRef<int32_t> shadowMapSize;    ///< r.Shadow.MapSize: texels per side of each shadow map
-  CVarRef<float> shadowDepthBias;    ///< r.Shadow.DepthBias: in shadow-map texels
+  CVarRef<int32_t> shadowMapSize;  ///< r.Shadow.MapSize: texels per side of each shadow map
+  CVarRef<float> shadowDepthBias;  ///< r.Shadow.DepthBias: in shadow-map texels
+  /// r.Shadow.CSM.MaxCascades: view-fitted cascades of a directional light's shadow, in
+  /// front of the whole-scene map (0: the whole-scene map alone).
+  CVarRef<int32_t> shadowCascades;
+  /// r.Shadow.CSM.DistributionExponent: how the cascades split the view's depth (each one
+  /// this many times deeper than the one before; Unreal's CascadeDistributionExponent).
+  CVarRef<float> shadowCascadeExponent;
   CVarRef<int32_t> tonemapOperator;  ///< r.Tonemap.Operator: ACES | Reinhard | Linear
   CVarRef<float> exposure;  ///< r.Tonemap.ExposureCompensation (EV), post-process "ExposureCompensation"
   CVarRef<float> bloomIntensity;  ///< r.Bloom.Intensity, post-process "BloomIntensity"

@@ -131,7 +131,12 @@ void main() {
 #ifdef RAY_TRACED_SHADOWS
       visibility = rayTracedVisibility(light, origin, Ng, L, rays);
 #else
-      if ((pc.flags & HAS_SHADOWS) != 0u) visibility = shadowFactor(light, P, Ng, L, shadowMaps);
+      // A light below the geometric surface is behind the surface itself, as a shadow ray
+      // (and the path tracer) finds: only a shading normal bent towards it sees it. The
+      // map's lookup, biased along L by up to 12.5 texels at grazing angles, would read
+      // such a point lit (the terminators of coarse curved objects glowed).
+      if ((pc.flags & HAS_SHADOWS) != 0u)
+        visibility = dot(Ng, L) <= 0.0 ? 0.0 : shadowFactor(light, P, Ng, L, shadowMaps);
 #endif
     }
     direct += evaluateBrdfCos(m, N, V, L) * E * visibility;

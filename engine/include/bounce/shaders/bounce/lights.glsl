@@ -21,7 +21,9 @@ struct Light {
   vec4 positionRange;  // xyz: position; w: glTF range (0: unlimited)
   vec4 directionType;  // xyz: direction the light travels (unit); w: type
   vec4 intensity;      // rgb: colour × intensity; w: first shadow layer (-1: no shadow)
-  vec4 params;         // x: cos(inner cone), y: cos(outer cone), z: shadow depth bias (m, along L), w: texel size (m at 1 m)
+  // x: cos(inner cone) (spot), cascades after the whole-scene map (directional); y: cos(outer
+  // cone); z: shadow depth bias (m, along L); w: texel size (m at 1 m; m for directional)
+  vec4 params;
 };
 
 #define LIGHTS(b) layout(std430, binding = b) readonly buffer SceneLights { Light lights[]; };

@@ -5,6 +5,16 @@
 
 #include "bounce/lights.glsl"
 
+// The map coordinates (uv, depth) of clip-space position `clip`; false where the map does
+// not reach (behind the light, outside the map, beyond its far plane): lit.
+bool shadowMapCoordinates(vec4 clip, out vec3 coords) {
+  coords = vec3(0.0);
+  if (clip.w <= 0.0) return false;
+  vec3 ndc = clip.xyz / clip.w;
+  coords = vec3(ndc.xy * 0.5 + 0.5, ndc.z);
+  return all(greaterThanEqual(coords.xy, vec2(0.0))) && all(lessThanEqual(coords.xy, vec2(1.0))) && ndc.z <= 1.0;
+}
+
 // Where P's shadow-map lookup is made: moved towards the light along L (a depth bias) so
 // lit surfaces do not shadow themselves. Along L the point stays on its own ray of the map,
 // so every shadow edge stays where its occluder casts it. (Offsetting along the normal, as
@@ -16,14 +26,44 @@
 // tan θ texels in depth per texel; half a texel more even head-on, where the map stores the
 // very depth looked up (a zero bias left lit-or-shadowed to rounding). params.w is a
 // texel's footprint at 1 m for perspective maps, in metres for directional ones; tan θ is
-// held below 8 (83°), where cos θ already dims the light to an eighth.
-vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L) {
-  uint type = uint(light.directionType.w + 0.5);
-  float footprint =
-      type == LIGHT_DIRECTIONAL ? light.params.w : light.params.w * length(P - light.positionRange.xyz);
+// held below 8 (83°), where cos θ already dims the light to an eighth. `footprint` is the
+// texel's size in metres at P.
+vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L, float footprint) {
   float cosTheta = max(dot(N, L), 0.0);
   float tanTheta = min(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 0.125), 8.0);
   return P + L * (light.params.z + footprint * (0.5 + 1.5 * tanTheta));
+}
+
+// A texel of the light's first map (a directional light's whole-scene map), in metres at P.
+float shadowTexelFootprint(Light light, vec3 P) {
+  uint type = uint(light.directionType.w + 0.5);
+  return type == LIGHT_DIRECTIONAL ? light.params.w : light.params.w * length(P - light.positionRange.xyz);
+}
+
+vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L) {
+  return shadowLookupPoint(light, P, N, L, shadowTexelFootprint(light, P));
+}
+
+// A directional light's finest cascade that holds P with the 3×3 taps' reach to spare
+// (its layers follow the whole-scene map, nearest the camera first; params.x of them):
+// its layer, and in `footprint` its texel in metres (an orthographic map's x row is
+// 2 / width). The whole-scene map when none does (or for other lights).
+int shadowCascadeLayer(Light light, vec3 P, float mapTexels, inout float footprint) {
+  int layer = int(light.intensity.w);
+  if (uint(light.directionType.w + 0.5) != LIGHT_DIRECTIONAL) return layer;
+  int cascades = int(light.params.x + 0.5);
+  float margin = 2.0 / mapTexels;
+  for (int i = 1; i <= cascades; ++i) {
+    mat4 m = shadowMatrices[layer + i];
+    vec4 clip = m * vec4(P, 1.0);
+    vec3 c;
+    if (shadowMapCoordinates(clip, c) && all(greaterThan(c.xy, vec2(margin))) &&
+        all(lessThan(c.xy, vec2(1.0 - margin))) && c.z >= 0.0) {
+      footprint = 2.0 / (max(length(vec3(m[0][0], m[1][0], m[2][0])), 1e-30) * mapTexels);
+      return layer + i;
+    }
+  }
+  return layer;
 }
 
 // The layer of the light's maps that holds the lookup point Q (the light has maps).
@@ -42,16 +82,6 @@ int shadowLayer(Light light, vec3 Q) {
   return layer;
 }
 
-// The map coordinates (uv, depth) of clip-space position `clip`; false where the map does
-// not reach (behind the light, outside the map, beyond its far plane): lit.
-bool shadowMapCoordinates(vec4 clip, out vec3 coords) {
-  coords = vec3(0.0);
-  if (clip.w <= 0.0) return false;
-  vec3 ndc = clip.xyz / clip.w;
-  coords = vec3(ndc.xy * 0.5 + 0.5, ndc.z);
-  return all(greaterThanEqual(coords.xy, vec2(0.0))) && all(lessThanEqual(coords.xy, vec2(1.0))) && ndc.z <= 1.0;
-}
-
 // One hardware 2×2 PCF tap at clip-space position `clip` of map `layer`; 1 (lit) where
 // the map does not reach.
 float shadowTap(vec4 clip, int layer, sampler2DArrayShadow maps) {
@@ -60,11 +90,15 @@ float shadowTap(vec4 clip, int layer, sampler2DArrayShadow maps) {
 }
 
 // Fraction of the light reaching P (1: lit). `N` is the geometric normal, whose angle to L
-// sizes the lookup's depth bias (shadowLookupPoint).
+// sizes the lookup's depth bias (shadowLookupPoint). A directional light's finest cascade
+// holding P is read (shadowCascadeLayer).
 float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow maps) {
   if (int(light.intensity.w) < 0) return 1.0;
-  vec3 Q = shadowLookupPoint(light, P, N, L);
-  int layer = shadowLayer(light, Q);
+  float footprint = shadowTexelFootprint(light, P);
+  int cascade = shadowCascadeLayer(light, P, float(textureSize(maps, 0).x), footprint);
+  // Moving along L keeps a directional light's lookup on the same texel of any of its maps.
+  vec3 Q = shadowLookupPoint(light, P, N, L, footprint);
+  int layer = cascade != int(light.intensity.w) ? cascade : shadowLayer(light, Q);
   vec3 c;
   if (!shadowMapCoordinates(shadowMatrices[layer] * vec4(Q, 1.0), c)) return 1.0;
   // 3×3 taps of hardware 2×2 PCF: a soft, stable edge at one texel's cost per tap.
@@ -83,7 +117,8 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
 // piece several shadow texels wide (a voxel's) this is the fraction of its area in light,
 // where shadowFactor filters only the texels around one point; and it costs 4 taps, not 9.
 // The quarters are placed in clip space (a point's clip position is linear in it), so one
-// matrix product serves them all; a point light's face is the centre's.
+// matrix product serves them all; a point light's face is the centre's, a directional
+// light's map the whole-scene one (what is voxelized must not change as the camera moves).
 float shadowFactorOverPatch(Light light, vec3 P, vec3 N, vec3 L, vec3 halfA, vec3 halfB, sampler2DArrayShadow maps) {
   if (int(light.intensity.w) < 0) return 1.0;
   vec3 Q = shadowLookupPoint(light, P, N, L);
