@@ -96,19 +96,40 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   if (int(light.intensity.w) < 0) return 1.0;
   float footprint = shadowTexelFootprint(light, P);
   int cascade = shadowCascadeLayer(light, P, float(textureSize(maps, 0).x), footprint);
-  // Moving along L keeps a directional light's lookup on the same texel of any of its maps.
-  vec3 Q = shadowLookupPoint(light, P, N, L, footprint);
+  bool directional = uint(light.directionType.w + 0.5) == LIGHT_DIRECTIONAL;
+  // Directional maps are orthographic: the receiver's plane has one depth slope over the
+  // map, and each tap compares against the plane's depth at that tap (receiver-plane depth
+  // bias) instead of a bias that covers the whole filter at the steepest slope. Only the
+  // hardware tap's own ±half texel is left to cover (0.5 tan θ, not 1.5 tan θ texels), so
+  // light leaks a third as far behind thin occluders such as window frames.
+  float cosTheta = max(dot(N, L), 0.0);
+  float tanTheta = min(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 0.125), 8.0);
+  vec3 Q = directional ? P + L * (light.params.z + footprint * (0.5 + 0.5 * tanTheta))
+                       : shadowLookupPoint(light, P, N, L, footprint);
   int layer = cascade != int(light.intensity.w) ? cascade : shadowLayer(light, Q);
+  mat4 m = shadowMatrices[layer];
   vec3 c;
-  if (!shadowMapCoordinates(shadowMatrices[layer] * vec4(Q, 1.0), c)) return 1.0;
+  if (!shadowMapCoordinates(m * vec4(Q, 1.0), c)) return 1.0;
+  vec2 texel = 1.0 / vec2(textureSize(maps, 0).xy);
+  // Depth change per texel step along the receiver's plane: the plane's normal in the map's
+  // normalized coordinates is M^-T N (M the linear part of the orthographic map), and depth
+  // follows -(n.x du + n.y dv) / n.z with du, dv in NDC (2 per map width). Held to the
+  // slope tan θ = 8 allows (83°) and 0 where the matrix is degenerate.
+  vec2 slope = vec2(0.0);
+  if (directional) {
+    vec3 n = inverse(transpose(mat3(m))) * N;
+    float maxSlope = 8.0 * length(vec3(m[0][2], m[1][2], m[2][2])) * footprint;  // depth units per texel at 83°
+    if (abs(n.z) > 1e-20) slope = clamp(-n.xy / n.z * 2.0 * texel, vec2(-maxSlope), vec2(maxSlope));
+    if (any(isnan(slope)) || any(isinf(slope))) slope = vec2(0.0);
+  }
   // 3×3 taps of hardware 2×2 PCF: a soft, stable edge at one texel's cost per tap.
 #ifdef BOUNCE_WORK_COUNTERS_GLSL
   countWork(WORK_TEXTURE_SAMPLES, 9u);  // a shader that counts its work counts these taps too
 #endif
-  vec2 texel = 1.0 / vec2(textureSize(maps, 0).xy);
   float lit = 0.0;
   for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x) lit += texture(maps, vec4(c.xy + vec2(x, y) * texel, float(layer), c.z));
+    for (int x = -1; x <= 1; ++x)
+      lit += texture(maps, vec4(c.xy + vec2(x, y) * texel, float(layer), c.z + dot(slope, vec2(x, y))));
   return lit / 9.0;
 }
 
