@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <filesystem>
 
 namespace bounce {
@@ -49,6 +52,23 @@ TEST_F(PluginHostTest, DiscoversDescriptorsAndReportsBrokenOnes) {
                           "TestBrokenDescriptor.bplugin: invalid plugin descriptor: not valid JSON"),
             1u)
       << capture.joined();
+}
+
+TEST_F(PluginHostTest, AFifoNamedLikeADescriptorIsSkippedUnopened) {
+  // Opening a FIFO blocks until something writes to it: start-up hung forever. It is
+  // skipped with a warning naming it; the real descriptors beside it still load.
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / ("bounce-fifo-plugins-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "Stuck");
+  ASSERT_EQ(::mkfifo((root / "Stuck" / "Stuck.bplugin").c_str(), 0600), 0);
+  log::Capture capture;
+  PluginHost fresh(services);
+  fresh.discover({root, BOUNCE_TEST_PLUGIN_ROOT});
+  EXPECT_EQ(capture.count(log::Level::Warning, "Stuck.bplugin: is a FIFO, not a regular file"), 1u)
+      << capture.joined();
+  EXPECT_NE(fresh.descriptor("TestGood"), nullptr);
+  fs::remove_all(root);
 }
 
 TEST_F(PluginHostTest, LoadsAPluginAndItsRegistrations) {

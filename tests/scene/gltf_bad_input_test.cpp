@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 namespace bounce {
 namespace {
 
@@ -55,7 +57,8 @@ TEST(GltfBadInput, DeeplyNestedJsonIsRefusedBeforeParsing) {
   const std::string depth(100000, '[');
   test::writeText(dir.file("deep.gltf"),
                   R"({"asset": {"version": "2.0"}, "extras": )" + depth + std::string(100000, ']') + "}");
-  expectFailure(loadGltf(dir.file("deep.gltf")), dir.file("deep.gltf"), {"malformed JSON", "100001 levels deep"});
+  expectFailure(loadGltf(dir.file("deep.gltf")), dir.file("deep.gltf"),
+                {"malformed JSON", "100001 levels deep"});
   // Brackets inside strings are text, not nesting.
   GltfBuilder b = validTriangle();
   b.doc["asset"]["extras"] = {{"note", std::string(2000, '[')}};
@@ -115,6 +118,24 @@ TEST(GltfBadInput, MissingImageFile) {
   TempDir dir;
   GltfLoadResult r = test::loadBuilt(b, dir);
   expectFailure(r, dir.file("scene.gltf"), {"image 'Bricks'", "bricks.png"});
+}
+
+TEST(GltfBadInput, ImageThatIsAFifoOrAFolderIsRefusedUnopened) {
+  // Opening a FIFO blocks until something writes to it: the loader hung. A folder read as
+  // std::bad_alloc. Both are refused before opening, with what they are.
+  for (const char* kind : {"FIFO", "folder"}) {
+    GltfBuilder b = validTriangle();
+    b.doc["images"] = {{{"name", "Bricks"}, {"uri", "bricks.png"}}};
+    b.doc["textures"] = {{{"source", 0}}};
+    TempDir dir;
+    if (std::string(kind) == "FIFO") {
+      ASSERT_EQ(::mkfifo(dir.file("bricks.png").c_str(), 0600), 0);
+    } else {
+      std::filesystem::create_directory(dir.file("bricks.png"));
+    }
+    GltfLoadResult r = test::loadBuilt(b, dir);
+    expectFailure(r, dir.file("scene.gltf"), {"image 'Bricks'", "'bricks.png' is a " + std::string(kind)});
+  }
 }
 
 TEST(GltfBadInput, UndecodableImage) {

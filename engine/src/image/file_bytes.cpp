@@ -1,5 +1,7 @@
 #include "image/file_bytes.h"
 
+#include "core/file_kind.h"
+
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -13,9 +15,8 @@ namespace fs = std::filesystem;
 namespace bounce::image {
 
 std::optional<std::vector<uint8_t>> readFileBytes(const std::string& path, std::string& reason) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) {
-    reason = "is a folder, not a file";
+  if (const std::optional<std::string> kind = notARegularFile(path)) {
+    reason = fmt::format("is {}, not a regular file", *kind);
     return std::nullopt;
   }
   std::ifstream in(path, std::ios::binary | std::ios::ate);
@@ -34,8 +35,23 @@ std::optional<std::vector<uint8_t>> readFileBytes(const std::string& path, std::
 }
 
 bool writeFileBytes(const std::string& path, const uint8_t* data, size_t size, std::string& reason) {
-  const fs::path target(path);
+  // Only a regular file (or nothing) is replaced: renaming over a device node, a FIFO or
+  // a link to one would destroy it (as root, /dev/full became a PNG).
+  if (const std::optional<std::string> kind = notARegularFile(path)) {
+    reason = fmt::format("is {}, not a regular file; not replaced", *kind);
+    return false;
+  }
   std::error_code ec;
+  // A link to a regular file: the file it names is replaced, the link stays.
+  fs::path target(path);
+  std::error_code notFound;  // a path that does not exist yet is no link
+  if (fs::is_symlink(fs::symlink_status(target, notFound))) {
+    target = fs::canonical(target, ec);
+    if (ec) {
+      reason = fmt::format("cannot follow the symbolic link: {}", ec.message());
+      return false;
+    }
+  }
   if (target.has_parent_path()) {
     fs::create_directories(target.parent_path(), ec);
     if (ec) {

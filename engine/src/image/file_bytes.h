@@ -11,11 +11,14 @@
 
 namespace bounce::image {
 
-/// The file's bytes, or nullopt with `reason` set (no file name in it).
+/// The file's bytes, or nullopt with `reason` set (no file name in it). Anything but a
+/// regular file is refused before it is opened (a FIFO would block).
 std::optional<std::vector<uint8_t>> readFileBytes(const std::string& path, std::string& reason);
 
-/// Replaces `path` atomically, creating missing parent folders. False with `reason` set
-/// (no file name in it) on failure.
+/// Replaces `path` atomically, creating missing parent folders. Only a regular file, a
+/// symbolic link to one (the file is replaced, the link stays) or a path that does not
+/// exist is written; anything else (a device, a FIFO, a folder, a link to one) is refused.
+/// False with `reason` set (no file name in it) on failure.
 bool writeFileBytes(const std::string& path, const uint8_t* data, size_t size, std::string& reason);
 
 }  // namespace bounce::image

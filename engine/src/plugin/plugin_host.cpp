@@ -1,5 +1,7 @@
 #include "bounce/plugin/plugin_host.h"
 
+#include "core/file_kind.h"
+
 #include "bounce/core/log.h"
 #include "bounce/core/names.h"
 #include "plugin/shared_library.h"
@@ -41,6 +43,11 @@ void PluginHost::discover(const std::vector<std::filesystem::path>& roots) {
   namespace fs = std::filesystem;
   auto consider = [&](const fs::path& found) {
     if (found.extension() != ".bplugin") return;
+    // Before opening it: a FIFO named X.bplugin blocked start-up forever.
+    if (const std::optional<std::string> kind = notARegularFile(found)) {
+      log::warn("{}: is {}, not a regular file; not a plugin descriptor, skipped", found.string(), *kind);
+      return;
+    }
     // Absolute: plugins name their shaders and content relative to their folder
     // (PluginContext::shaderPath), and a relative folder would mean the working directory.
     std::error_code absoluteError;

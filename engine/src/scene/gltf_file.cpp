@@ -1,5 +1,7 @@
 #include "gltf_file.h"
 
+#include "core/file_kind.h"
+
 #include "gltf_context.h"
 #include "gltf_images.h"
 
@@ -56,8 +58,10 @@ size_t jsonNestingDepth(std::string_view json) {
   for (size_t i = 0; i < json.size(); ++i) {
     const char c = json[i];
     if (inString) {
-      if (c == '\\') ++i;  // skips the escaped character, a quote among them
-      else if (c == '"') inString = false;
+      if (c == '\\')
+        ++i;  // skips the escaped character, a quote among them
+      else if (c == '"')
+        inString = false;
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
@@ -79,9 +83,38 @@ std::string_view jsonText(const std::vector<unsigned char>& bytes, bool binary) 
   const char* data = reinterpret_cast<const char*>(bytes.data());
   if (!binary) return {data, bytes.size()};
   if (bytes.size() < 20) return {};
-  const uint32_t length = uint32_t(bytes[12]) | uint32_t(bytes[13]) << 8 | uint32_t(bytes[14]) << 16 |
-                          uint32_t(bytes[15]) << 24;
+  const uint32_t length =
+      uint32_t(bytes[12]) | uint32_t(bytes[13]) << 8 | uint32_t(bytes[14]) << 16 | uint32_t(bytes[15]) << 24;
   return {data + 20, std::min<size_t>(length, bytes.size() - 20)};
+}
+
+// tinygltf's file access for external buffers and images, refusing what is not a regular
+// file before opening it: its defaults open a file to see whether it exists and read it
+// with a stream, so a URI naming a FIFO blocked the loader forever, and one naming a
+// folder read as std::bad_alloc.
+bool fileExists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* error, const std::string& path, void*) {
+  if (const std::optional<std::string> kind = notARegularFile(path)) {
+    if (error) *error += fmt::format("'{}' is {}, not a regular file", path, *kind);
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in ? std::streamoff(in.tellg()) : std::streamoff(-1);
+  if (size < 0) {
+    if (error) *error += fmt::format("'{}' could not be opened", path);
+    return false;
+  }
+  out->resize(size_t(size));
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(out->size()))) {
+    if (error) *error += fmt::format("'{}' could not be read", path);
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -105,12 +138,14 @@ void readGltfFile(const std::string& path, tinygltf::Model& model,
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&decodeImageInsideBuffers, &model);
+  loader.SetFsCallbacks(
+      {&fileExists, &tinygltf::ExpandFilePath, &readWholeFile, &tinygltf::WriteWholeFile, nullptr});
   const std::string baseDir = std::filesystem::path(path).parent_path().string();
   const bool binary =
       bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
   if (const size_t depth = jsonNestingDepth(jsonText(bytes, binary)); depth > kMaxJsonDepth) {
-    throw LoadError(fmt::format("{}: malformed JSON: nested {} levels deep (at most {} are read)", path, depth,
-                                kMaxJsonDepth));
+    throw LoadError(fmt::format("{}: malformed JSON: nested {} levels deep (at most {} are read)", path,
+                                depth, kMaxJsonDepth));
   }
   std::string error, warning;
   bool ok = false;

@@ -1,6 +1,10 @@
 #include "gltf_images.h"
 
+#include "core/file_kind.h"
+
 #include <fmt/format.h>
+
+#include <filesystem>
 
 #include <cstdint>
 #include <cstring>
@@ -43,6 +47,13 @@ Texture convertImage(const LoadContext& ctx, int index) {
   const bool external = !image.uri.empty() && image.uri.rfind("data:", 0) != 0;
   const std::string element = elementName("image", index, image.name);
   if (image.image.empty() || image.width <= 0 || image.height <= 0) {
+    // A URI naming a FIFO, a device or a folder was refused unopened (gltf_file.cpp): say what it is.
+    if (external) {
+      const std::filesystem::path file =
+          std::filesystem::path(ctx.file).parent_path() / image.uri;  // percent-escapes: the generic message
+      if (const std::optional<std::string> kind = notARegularFile(file))
+        ctx.fail(element, fmt::format("'{}' is {}, not a regular file", image.uri, *kind));
+    }
     ctx.fail(element, external ? fmt::format("could not be loaded or decoded from '{}'", image.uri)
                                : "could not be loaded or decoded");
   }
