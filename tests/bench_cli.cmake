@@ -27,3 +27,27 @@ echo \"$out\"; [ $s -eq 2 ] && printf '%s' \"$out\" | grep -qF -- '${must_say}' 
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} LABELS bench-cli TIMEOUT 120)
   endforeach()
 endif()
+
+# The other benchmark programs: bad values exit 2 with one line naming the option (not
+# CLI11's own codes, 105 for an out-of-range value; NaN passed its range checks), and an
+# unwritable --json is an error, not a silent exit 0.
+set(other_cases
+    "render_bench_light_move_nan|bounce-render-bench|--light-move|--light-move nan"
+    "render_bench_sizes_zero|bounce-render-bench|--sizes|--sizes 0"
+    "ray_bench_rays_zero|bounce-ray-bench|--rays|--rays 0"
+    "ray_bench_json_unwritable|bounce-ray-bench|--json|--rays 256 --runs 1 --json /proc/nope.json")
+foreach(case ${other_cases})
+  string(REPLACE "|" ";" parts "${case}")
+  list(GET parts 0 name)
+  list(GET parts 1 program)
+  list(GET parts 2 must_say)
+  list(GET parts 3 arguments)
+  if(TARGET ${program})
+    add_test(NAME bench_cli.${name}
+             COMMAND sh -c "out=$($<TARGET_FILE:${program}> ${arguments} 2>&1); s=$?; echo \"$out\"; \
+[ $s -eq 2 ] && printf '%s' \"$out\" | grep -F -- '${must_say}' | grep -q '^${program}: '")
+    set_tests_properties(bench_cli.${name} PROPERTIES
+      ENVIRONMENT "BOUNCE_ROOT=${PROJECT_SOURCE_DIR};BOUNCE_SHADER_CACHE=${PROJECT_BINARY_DIR}/shader-cache"
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} LABELS bench-cli TIMEOUT 300)
+  endif()
+endforeach()

@@ -300,7 +300,13 @@ int run(const Options& o) {
                         {"deviceToEmbree", rate(deviceMs) / std::max(rate(embreeAllMs), 1e-9)},
                         {"hitRate", double(hits) / double(std::max<size_t>(rays.size(), 1))},
                         {"hitMissDisagreements", disagreements}};
-    std::ofstream(o.json) << j.dump(2) << "\n";
+    std::ofstream out(o.json);
+    out << j.dump(2) << "\n";
+    out.close();
+    if (!out) {
+      app::printError("bounce-ray-bench", fmt::format("--json {}: cannot write", o.json));
+      return 2;
+    }
   }
   if (device->validationErrorCount() > 0) {
     app::printError("bounce-ray-bench",
@@ -338,7 +344,9 @@ int main(int argc, char** argv) {
   app.add_option("--json", o.json, "Also write the results to this JSON file");
   app.add_option("--device", o.device, "Vulkan device name (substring)");
   app.add_flag("--validation", o.validation, "Vulkan validation layer on; any error exits with status 3");
-  CLI11_PARSE(app, argc, argv);
+  // Bad values exit 2 with one line, as in every app (CLI11's own codes, 105 for an
+  // out-of-range value, are not Bounce's).
+  if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-ray-bench")) return *status;
   try {
     return run(o);
   } catch (const std::exception& e) {

@@ -44,6 +44,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -166,7 +167,9 @@ int main(int argc, char** argv) {
   app.add_option("--generate", generate,
                  "Render a generated room with spheres of about this many triangles instead of --scene");
   app.add_option("--gi", technique, "GI technique (default: r.GI.Technique from the ini files)");
-  app.add_option("--sizes", sizes, "Square output sizes")->delimiter(',');
+  app.add_option("--sizes", sizes, "Square output sizes (1 to 16384)")
+      ->delimiter(',')
+      ->check(CLI::Range(1u, 16384u));
   app.add_option("--frames", frames, "Frames per size and variant (the first is not timed)")
       ->check(CLI::Range(2u, 10000u));
   uint32_t rounds = 1;
@@ -182,9 +185,11 @@ int main(int argc, char** argv) {
   float lightMove = 0.0f;
   uint32_t lightMoveFrames = 300;
   app.add_option(
-      "--light-move", lightMove,
-      "Afterwards, move the first light this many metres along +x and report the frames and GPU ms until "
-      "the indirect irradiance settles (within 5% and 2% relative RMSE of where it ends, beyond its noise)");
+         "--light-move", lightMove,
+         "Afterwards, move the first light this many metres along +x and report the frames and GPU ms until "
+         "the indirect irradiance settles (within 5% and 2% relative RMSE of where it ends, beyond its "
+         "noise)")
+      ->check(CLI::Range(-1e6f, 1e6f));
   app.add_option("--light-move-frames", lightMoveFrames, "Frames rendered after the move (default 300)")
       ->check(CLI::Range(10u, 100000u));
   bool perLevel = false;
@@ -200,6 +205,12 @@ int main(int argc, char** argv) {
   bool keepGoing = false;
   bounce::app::addKeepGoing(app, keepGoing);
   if (auto status = bounce::app::parseArguments(app, argc, argv, "bounce-render-bench")) return *status;
+  // NaN passes CLI11's range check (every comparison with it is false).
+  if (!std::isfinite(lightMove)) {
+    bounce::app::printError("bounce-render-bench",
+                            fmt::format("--light-move: {} is not a distance", lightMove));
+    return 2;
+  }
 
   std::vector<bounce::BenchVariant> variants;
   for (const std::string& text : variantTexts) {

@@ -38,7 +38,17 @@ std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, ui
     s.name = v->name.empty() ? fmt::format("volume {}", specs.size()) : v->name;
     const Aabb box = v->box();
     if (const std::optional<glm::dvec3> counts = v->triple("ProbeCounts")) {
-      // One cell per probe, each probe at its cell's centre (as fitGrid places them).
+      // One cell per probe, each probe at its cell's centre (as fitGrid places them). A
+      // count outside int's range (1e20, NaN) would be undefined as an int: it is refused.
+      bool representable = true;
+      for (int axis = 0; axis < 3; ++axis)
+        representable = representable && std::isfinite((*counts)[axis]) && std::abs((*counts)[axis]) < 1e9;
+      if (!representable) {
+        problems.push_back(
+            fmt::format("DDGIVolume '{}': ProbeCounts ({}, {}, {}) are not probe counts; left out", s.name,
+                        (*counts).x, (*counts).y, (*counts).z));
+        continue;
+      }
       s.grid.center = box.center();
       s.grid.counts = glm::ivec3(glm::round(*counts));
       s.grid.spacing = box.size() / glm::max(glm::vec3(s.grid.counts), glm::vec3(1.0f));

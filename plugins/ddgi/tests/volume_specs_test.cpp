@@ -3,6 +3,8 @@
 #include "volume_specs.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace bounce::ddgi {
@@ -63,6 +65,21 @@ TEST(VolumeSpecs, UnusableVolumesAreLeftOutWithAReason) {
   Scene disabled;
   disabled.addVolume(volume("off", {0, 0, 0}, {1, 1, 1}, {{"Enabled", false}}));
   EXPECT_TRUE(volumeSpecs(disabled, 0.0f, 8, 10, problems).empty());
+}
+
+TEST(VolumeSpecs, ProbeCountsBeyondAnIntAreRefusedNotConverted) {
+  // 1e20 as an int is undefined behaviour (it read as -2147483648); NaN too.
+  Scene scene;
+  const double nan = std::nan("");
+  scene.addVolume(volume("huge", {0, 0, 0}, {1, 1, 1}, {{"ProbeCounts", std::vector<double>{1e20, 4, 4}}}));
+  scene.addVolume(volume("nan", {0, 0, 0}, {1, 1, 1}, {{"ProbeCounts", std::vector<double>{4, nan, 4}}}));
+  std::vector<std::string> problems;
+  EXPECT_TRUE(volumeSpecs(scene, 0.0f, 8, 10, problems).empty());
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_NE(problems[0].find("DDGIVolume 'huge': ProbeCounts (1e+20, 4, 4) are not probe counts"),
+            std::string::npos)
+      << problems[0];
+  EXPECT_NE(problems[1].find("'nan'"), std::string::npos) << problems[1];
 }
 
 }  // namespace
