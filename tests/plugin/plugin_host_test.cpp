@@ -3,6 +3,7 @@
 
 #include "bounce/plugin/plugin_host.h"
 #include "bounce/core/log.h"
+#include "bounce/plugin/plugin.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 
 namespace bounce {
 namespace {
@@ -68,6 +70,23 @@ TEST_F(PluginHostTest, AFifoNamedLikeADescriptorIsSkippedUnopened) {
   EXPECT_EQ(capture.count(log::Level::Warning, "Stuck.bplugin: is a FIFO, not a regular file"), 1u)
       << capture.joined();
   EXPECT_NE(fresh.descriptor("TestGood"), nullptr);
+  fs::remove_all(root);
+}
+
+TEST_F(PluginHostTest, ThePluginNameNoneIsReserved) {
+  // `--gi none` means no technique: a plugin named None (any case) would take it over.
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / ("bounce-none-plugin-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "None");
+  std::ofstream(root / "None" / "None.bplugin")
+      << R"({"Name": "NONE", "Category": "GlobalIllumination", "EngineApiVersion": )" << kPluginApiVersion
+      << R"(, "Library": "bounce_none"})";
+  log::Capture capture;
+  PluginHost fresh(services);
+  fresh.discover({root});
+  EXPECT_EQ(fresh.descriptor("NONE"), nullptr);
+  EXPECT_EQ(capture.count(log::Level::Error, "plugin name 'NONE' is reserved"), 1u) << capture.joined();
   fs::remove_all(root);
 }
 

@@ -58,6 +58,12 @@ void PluginHost::discover(const std::vector<std::filesystem::path>& roots) {
       log::error("{}", error);
       return;
     }
+    if (equalsIgnoreCase(d->name, "none")) {
+      // `--gi none` / r.GI.Technique none means no technique: a plugin may not take it over.
+      log::error("{}: plugin name '{}' is reserved (--gi none means no GI technique); not loaded",
+                 file.string(), d->name);
+      return;
+    }
     if (const PluginDescriptor* existing = descriptor(d->name)) {
       // Documented precedence: the first folder on the search path wins, so a plugin built
       // in development (--plugin-dir) replaces an installed one of the same name.
