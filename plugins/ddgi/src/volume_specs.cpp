@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <type_traits>
+#include <variant>
 
 namespace bounce::ddgi {
 
@@ -27,6 +29,45 @@ std::optional<T> ranged(const SceneVolume& v, const char* key, double lo, double
   return T(*x);
 }
 
+// What a member holds, for a message.
+std::string describe(const SceneVolumeValue& value) {
+  return std::visit(
+      [](const auto& x) -> std::string {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, bool>) return fmt::format("{} (a boolean)", x);
+        if constexpr (std::is_same_v<T, double>) return fmt::format("{} (a number)", x);
+        if constexpr (std::is_same_v<T, std::string>) return fmt::format("\"{}\" (a string)", x);
+        if constexpr (std::is_same_v<T, std::vector<double>>)
+          return fmt::format("an array of {} numbers", x.size());
+      },
+      value);
+}
+
+// Members of the wrong JSON type ("ProbeSpacing": "0.5", "Enabled": "yes", two probe
+// counts) read as absent: each is reported, so a volume does not silently fall back.
+void reportMistypedFields(const SceneVolume& v, const std::string& name, std::vector<std::string>& problems) {
+  enum class Kind { Number, Flag, Triple };
+  static const std::pair<const char*, Kind> kFields[] = {
+      {"ProbeSpacing", Kind::Number}, {"ProbeCounts", Kind::Triple}, {"RaysPerProbe", Kind::Number},
+      {"Hysteresis", Kind::Number},   {"Intensity", Kind::Number},   {"NormalBias", Kind::Number},
+      {"ViewBias", Kind::Number},     {"Enabled", Kind::Flag},       {"FollowCamera", Kind::Flag}};
+  for (const auto& [key, kind] : kFields) {
+    const auto it = v.settings.find(key);
+    if (it == v.settings.end()) continue;
+    const SceneVolumeValue& value = it->second;
+    const bool ok = kind == Kind::Number ? std::holds_alternative<double>(value)
+                    : kind == Kind::Flag ? std::holds_alternative<bool>(value)
+                                         : std::holds_alternative<std::vector<double>>(value) &&
+                                               std::get<std::vector<double>>(value).size() == 3;
+    if (ok) continue;
+    const char* expected = kind == Kind::Number ? "a number"
+                           : kind == Kind::Flag ? "true or false"
+                                                : "three numbers";
+    problems.push_back(
+        fmt::format("DDGIVolume '{}': {} is {}, not {}; ignored", name, key, describe(value), expected));
+  }
+}
+
 }  // namespace
 
 std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, uint32_t irradianceTexels,
@@ -36,6 +77,7 @@ std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, ui
     if (v->flag("Enabled") == false) continue;
     VolumeSpec s;
     s.name = v->name.empty() ? fmt::format("volume {}", specs.size()) : v->name;
+    reportMistypedFields(*v, s.name, problems);
     const Aabb box = v->box();
     if (const std::optional<glm::dvec3> counts = v->triple("ProbeCounts")) {
       // One cell per probe, each probe at its cell's centre (as fitGrid places them). A
@@ -54,6 +96,9 @@ std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, ui
       s.grid.spacing = box.size() / glm::max(glm::vec3(s.grid.counts), glm::vec3(1.0f));
     } else {
       const std::optional<double> spacing = v->number("ProbeSpacing");
+      if (spacing && !(*spacing > 0.0))
+        problems.push_back(fmt::format(
+            "DDGIVolume '{}': ProbeSpacing {} is not a spacing; using the r.DDGI setting", s.name, *spacing));
       s.grid = fitGrid(box, spacing && *spacing > 0.0 ? float(*spacing) : defaultSpacing);
     }
     if (std::string error = s.grid.validate(irradianceTexels, distanceTexels); !error.empty()) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -65,6 +66,29 @@ TEST(VolumeSpecs, UnusableVolumesAreLeftOutWithAReason) {
   Scene disabled;
   disabled.addVolume(volume("off", {0, 0, 0}, {1, 1, 1}, {{"Enabled", false}}));
   EXPECT_TRUE(volumeSpecs(disabled, 0.0f, 8, 10, problems).empty());
+}
+
+TEST(VolumeSpecs, MembersOfTheWrongTypeAreReportedNotSilentlyIgnored) {
+  Scene scene;
+  scene.addVolume(volume("typos", {0, 0, 0}, {2, 2, 2},
+                         {{"ProbeSpacing", std::string("0.5")},
+                          {"Hysteresis", true},
+                          {"Enabled", std::string("yes")},
+                          {"ProbeCounts", std::vector<double>{4, 4}}}));
+  scene.addVolume(volume("negative", {0, 0, 0}, {2, 2, 2}, {{"ProbeSpacing", -1.0}}));
+  std::vector<std::string> problems;
+  const auto specs = volumeSpecs(scene, 1.0f, 8, 10, problems);
+  EXPECT_EQ(specs.size(), 2u) << "both volumes stay, with the r.DDGI settings";
+  auto said = [&](const std::string& text) {
+    return std::any_of(problems.begin(), problems.end(),
+                       [&](const std::string& p) { return p.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(said("'typos': ProbeSpacing is \"0.5\" (a string), not a number; ignored"));
+  EXPECT_TRUE(said("'typos': Hysteresis is true (a boolean), not a number; ignored"));
+  EXPECT_TRUE(said("'typos': Enabled is \"yes\" (a string), not true or false; ignored"));
+  EXPECT_TRUE(said("'typos': ProbeCounts is an array of 2 numbers, not three numbers; ignored"));
+  EXPECT_TRUE(said("'negative': ProbeSpacing -1 is not a spacing"));
+  EXPECT_EQ(problems.size(), 5u);
 }
 
 TEST(VolumeSpecs, ProbeCountsBeyondAnIntAreRefusedNotConverted) {
