@@ -25,6 +25,14 @@ fs::path defaultReferenceCache() {
 
 namespace {
 
+// Once per run: every half and every doubling would say the same.
+void reportCacheFailure(const std::string& why) {
+  static bool reported = false;
+  if (reported) return;
+  reported = true;
+  log::error("could not cache the reference (it will be rendered again next time): {}", why);
+}
+
 // FNV-1a over everything that determines the image. The path tracer's own sources are
 // not hashed: bump kVersion when its output changes (v2: box-filtered pixels, direct AOV;
 // v3: camera rays pass single-sided back faces, as the rasterizer culls them).
@@ -125,15 +133,20 @@ struct ReferenceRenderer::Half {
     std::error_code ec;
     fs::create_directories(dir, ec);
     std::string writeError;
+    // Said as an error: the bench shows only errors while it measures, and a cache that
+    // silently never fills costs every later run the reference's minutes again.
     for (const char* aov : kAovs)
       if (!writeExr(images.at(aov), (dir / (std::string(aov) + ".exr")).string(), &writeError)) {
-        log::warn("could not cache the reference: {}", writeError);
+        reportCacheFailure(writeError);
         return;
       }
     nlohmann::json meta{{"scene", r.scene.string()}, {"width", r.width},     {"height", r.height},
                         {"samples", samples},        {"bounces", r.bounces}, {"seed", seed},
                         {"seconds", seconds},        {"version", kVersion}};
-    std::ofstream(dir / "meta.json") << meta.dump(2) << '\n';
+    std::ofstream out(dir / "meta.json");
+    out << meta.dump(2) << '\n';
+    out.close();
+    if (!out) reportCacheFailure(fmt::format("cannot write {}", (dir / "meta.json").string()));
   }
 };
 
