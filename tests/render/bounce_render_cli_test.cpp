@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -58,6 +60,24 @@ TEST(BounceRenderCli, RendersPngAovsAndStats) {
   EXPECT_TRUE(lighting);
   EXPECT_TRUE(j["resources"].size() > 3);
   EXPECT_NE(r.output.find("Lighting"), std::string::npos) << r.output;  // the per-pass table
+}
+
+TEST(BounceRenderCli, AnOutputThatIsNotARegularFileStopsItBeforeAnythingIsWritten) {
+  // A FIFO as an AOV's file, made in the build tree (never /dev): refused with one line
+  // before rendering, so the PNG named before it is not written either, and the FIFO stays.
+  const std::string fifo = scratch("pipe.exr"), png = scratch("not-written.png");
+  std::filesystem::remove(fifo);
+  std::filesystem::remove(png);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const CommandResult r = run("--scene content/cornell_box.gltf --gi none --width 16 --height 16 --out " +
+                              png + " --aov direct=" + fifo);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("bounce-render: " + fifo + ": is a FIFO, not a regular file; not replaced"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(png));
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  std::filesystem::remove(fifo);
 }
 
 TEST(BounceRenderCli, ScreenPercentageRendersSmallerAndUpscalesToTheRequestedSize) {

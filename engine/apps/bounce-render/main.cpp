@@ -22,6 +22,7 @@
 #include "renderer/renderer.h"
 
 #include <fmt/format.h>
+#include "output_paths.h"
 #include "parse_arguments.h"
 
 #include <CLI/CLI.hpp>
@@ -109,6 +110,10 @@ int main(int argc, char** argv) {
                                          bounce::didYouMean(name, known), fmt::join(known, ", ")));
     aovs.push_back({name, a.substr(eq + 1)});
   }
+  // Images replace their files whole (--stats and --graph-json write through, so a pipe works).
+  std::vector<std::string> outputs{outPath};
+  for (const AovRequest& a : aovs) outputs.push_back(a.file);
+  if (auto refused = bounce::app::refusedOutput(outputs)) return fail(kBadInput, *refused);
 
   bounce::GltfLoadResult loaded = engine.loadScene(scenePath);
   if (!loaded.scene && !engine.scene()) return fail(kBadInput, loaded.error);
