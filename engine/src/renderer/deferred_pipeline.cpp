@@ -29,8 +29,7 @@ bool inClipVolume(const glm::mat4& m, const Aabb& box) {
   if (box.empty()) return true;
   bool allOutside[6] = {true, true, true, true, true, true};
   for (int i = 0; i < 8; ++i) {
-    const glm::vec4 c = m * glm::vec4((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y,
-                                      (i & 4) ? box.max.z : box.min.z, 1.0f);
+    const glm::vec4 c = m * glm::vec4(box.corner(i), 1.0f);
     const float planes[6] = {c.x + c.w, c.w - c.x, c.y + c.w, c.w - c.y, c.z, c.w - c.z};
     for (int p = 0; p < 6; ++p) allOutside[p] = allOutside[p] && planes[p] < 0.0f;
   }

@@ -55,31 +55,21 @@ ViewFrustum viewFrustum(const FrameView& v) {
 glm::mat4 cascadeMatrix(const glm::vec3& dir, const ViewFrustum& f, float d0, float d1, const Aabb& scene,
                         float texels) {
   const glm::mat4 rotation = glm::lookAt(glm::vec3(0.0f), dir, upFor(dir));
-  auto lightSpace = [&](const glm::vec3& p) { return glm::vec3(rotation * glm::vec4(p, 1.0f)); };
-  glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  float deepest = -std::numeric_limits<float>::max();  // farthest receiver along the light
+  // Both in the light's frame, where view-space z is -dot(p, dir): depth along the light.
+  Aabb slice;
   for (int i = 0; i < 8; ++i) {
     const float d = (i & 4) ? d1 : d0;
     const glm::vec3 corner = f.position + f.forward * d + f.right * (((i & 1) ? 1.0f : -1.0f) * d * f.tanX) +
                              f.up * (((i & 2) ? 1.0f : -1.0f) * d * f.tanY);
-    const glm::vec3 l = lightSpace(corner);
-    lo = glm::min(lo, glm::vec2(l));
-    hi = glm::max(hi, glm::vec2(l));
-    deepest = std::max(deepest, -l.z);
+    slice.extend(glm::vec3(rotation * glm::vec4(corner, 1.0f)));
   }
-  // View-space z is -dot(p, dir): depth along the light. Casters between the light and
-  // the slice lie anywhere in the scene, so the near plane is the scene's nearest point.
-  glm::vec2 sceneLo(std::numeric_limits<float>::max()), sceneHi(-std::numeric_limits<float>::max());
-  float nearest = std::numeric_limits<float>::max(), sceneDeepest = -std::numeric_limits<float>::max();
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 l =
-        lightSpace(glm::vec3((i & 1) ? scene.max.x : scene.min.x, (i & 2) ? scene.max.y : scene.min.y,
-                             (i & 4) ? scene.max.z : scene.min.z));
-    sceneLo = glm::min(sceneLo, glm::vec2(l));
-    sceneHi = glm::max(sceneHi, glm::vec2(l));
-    nearest = std::min(nearest, -l.z);
-    sceneDeepest = std::max(sceneDeepest, -l.z);
-  }
+  const Aabb world = scene.transformed(rotation);
+  glm::vec2 lo(slice.min), hi(slice.max);
+  const glm::vec2 sceneLo(world.min), sceneHi(world.max);
+  const float deepest = -slice.min.z;  // the farthest receiver along the light
+  // Casters between the light and the slice lie anywhere in the scene, so the near plane
+  // is the scene's nearest point.
+  const float nearest = -world.max.z, sceneDeepest = -world.min.z;
   lo = glm::max(lo, sceneLo);
   hi = glm::min(hi, sceneHi);
   if (!(lo.x < hi.x && lo.y < hi.y)) lo = sceneLo, hi = sceneHi;  // the slice misses the scene
@@ -99,11 +89,7 @@ glm::mat4 cascadeMatrix(const glm::vec3& dir, const ViewFrustum& f, float d0, fl
 /// its bounds ahead of the camera.
 float sceneFarDepth(const ViewFrustum& f, const Aabb& scene) {
   float far = 0.0f;
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec3 corner((i & 1) ? scene.max.x : scene.min.x, (i & 2) ? scene.max.y : scene.min.y,
-                           (i & 4) ? scene.max.z : scene.min.z);
-    far = std::max(far, glm::dot(corner - f.position, f.forward));
-  }
+  for (int i = 0; i < 8; ++i) far = std::max(far, glm::dot(scene.corner(i) - f.position, f.forward));
   return far;
 }
 

@@ -1,6 +1,6 @@
 #include "gltf_file.h"
 
-#include "core/file_kind.h"
+#include "image/file_bytes.h"
 
 #include "gltf_context.h"
 #include "gltf_images.h"
@@ -98,22 +98,13 @@ bool fileExists(const std::string& path, void*) {
 }
 
 bool readWholeFile(std::vector<unsigned char>* out, std::string* error, const std::string& path, void*) {
-  if (const std::optional<std::string> kind = notARegularFile(path)) {
-    if (error) *error += fmt::format("'{}' is {}, not a regular file", path, *kind);
+  std::string reason;
+  std::optional<std::vector<uint8_t>> bytes = image::readFileBytes(path, reason);
+  if (!bytes) {
+    if (error) *error += fmt::format("'{}' {}", path, reason);
     return false;
   }
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  const std::streamoff size = in ? std::streamoff(in.tellg()) : std::streamoff(-1);
-  if (size < 0) {
-    if (error) *error += fmt::format("'{}' could not be opened", path);
-    return false;
-  }
-  out->resize(size_t(size));
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(out->size()))) {
-    if (error) *error += fmt::format("'{}' could not be read", path);
-    return false;
-  }
+  *out = std::move(*bytes);
   return true;
 }
 

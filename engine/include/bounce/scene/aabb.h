@@ -27,14 +27,15 @@ struct Aabb {
     return !empty() && !b.empty() && glm::all(glm::lessThanEqual(min, b.max)) &&
            glm::all(glm::lessThanEqual(b.min, max));
   }
+  /// Corner i of 8: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+  glm::vec3 corner(int i) const {
+    return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+  }
   /// The box enclosing this one after an affine transform.
   Aabb transformed(const glm::mat4& m) const {
     Aabb out;
     if (empty()) return out;
-    for (int i = 0; i < 8; ++i) {
-      glm::vec3 c{(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
-      out.extend(glm::vec3(m * glm::vec4(c, 1.0f)));
-    }
+    for (int i = 0; i < 8; ++i) out.extend(glm::vec3(m * glm::vec4(corner(i), 1.0f)));
     return out;
   }
 };

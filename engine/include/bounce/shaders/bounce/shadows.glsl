@@ -27,11 +27,13 @@ bool shadowMapCoordinates(vec4 clip, out vec3 coords) {
 // very depth looked up (a zero bias left lit-or-shadowed to rounding). params.w is a
 // texel's footprint at 1 m for perspective maps, in metres for directional ones; tan θ is
 // held below 8 (83°), where cos θ already dims the light to an eighth. `footprint` is the
-// texel's size in metres at P.
-vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L, float footprint) {
+// texel's size in metres at P; `reach` how many texels of the surface's own slope the
+// lookup's filter reads around P (1.5 for the 3×3 taps; 0.5, the hardware tap's own half
+// texel, where each tap follows the receiver's plane).
+vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L, float footprint, float reach) {
   float cosTheta = max(dot(N, L), 0.0);
   float tanTheta = min(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 0.125), 8.0);
-  return P + L * (light.params.z + footprint * (0.5 + 1.5 * tanTheta));
+  return P + L * (light.params.z + footprint * (0.5 + reach * tanTheta));
 }
 
 // A texel of the light's first map (a directional light's whole-scene map), in metres at P.
@@ -41,7 +43,7 @@ float shadowTexelFootprint(Light light, vec3 P) {
 }
 
 vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L) {
-  return shadowLookupPoint(light, P, N, L, shadowTexelFootprint(light, P));
+  return shadowLookupPoint(light, P, N, L, shadowTexelFootprint(light, P), 1.5);
 }
 
 // A directional light's finest cascade that holds P with the 3×3 taps' reach to spare
@@ -102,10 +104,7 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   // bias) instead of a bias that covers the whole filter at the steepest slope. Only the
   // hardware tap's own ±half texel is left to cover (0.5 tan θ, not 1.5 tan θ texels), so
   // light leaks a third as far behind thin occluders such as window frames.
-  float cosTheta = max(dot(N, L), 0.0);
-  float tanTheta = min(sqrt(max(1.0 - cosTheta * cosTheta, 0.0)) / max(cosTheta, 0.125), 8.0);
-  vec3 Q = directional ? P + L * (light.params.z + footprint * (0.5 + 0.5 * tanTheta))
-                       : shadowLookupPoint(light, P, N, L, footprint);
+  vec3 Q = shadowLookupPoint(light, P, N, L, footprint, directional ? 0.5 : 1.5);
   int layer = cascade != int(light.intensity.w) ? cascade : shadowLayer(light, Q);
   mat4 m = shadowMatrices[layer];
   vec3 c;
