@@ -5,7 +5,8 @@
 #   bash tools/fuzz.sh all SECONDS          # each target in turn, SECONDS each
 #   bash tools/fuzz.sh list                 # the target names
 #
-# Targets (tests/fuzz/fuzz_*.cpp): ini, cvar, console, script, plugin_descriptor, gltf.
+# Targets (tests/fuzz/fuzz_*.cpp): ini, cvar, console, script, plugin_descriptor, gltf,
+# ddgi_volume.
 # Seeds are read from tests/fuzz/corpus/<target>/ (checked in, never written); what the
 # fuzzer learns goes to $BUILD/fuzz-corpus/<target>/, and a crashing input to
 # $BUILD/fuzz-artifacts/. Reproduce one with: $BUILD/fuzz/fuzz_<target> FILE.
@@ -15,7 +16,7 @@
 # target found anything.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-targets=(ini cvar console script plugin_descriptor gltf)
+targets=(ini cvar console script plugin_descriptor gltf ddgi_volume)
 build=${BOUNCE_ASAN_BUILD:-build-asan}
 
 if [ "${1:-}" = list ]; then printf '%s\n' "${targets[@]}"; exit 0; fi

@@ -235,10 +235,14 @@ TEST(Engine, BuildFrameInterleavesEngineStagesAndHooksInExtensionPointOrder) {
   FrameContext frame{scene, e.cvars(), view, pp, 0, e.technique()};
   RenderGraph graph;
   log::Capture capture;
-  e.buildFrame(graph, frame, stages);
+  const std::vector<Engine::HookTiming> timings = e.buildFrame(graph, frame, stages);
   EXPECT_EQ(calls, (std::vector<std::string>{"begin", "GEOMETRY", "afterG.-1", "afterG.1", "ao", "LIGHTING",
                                              "beforePost", "POST", "debug", "OUTPUT"}));
   EXPECT_TRUE(capture.contains("pass hook 'throws' (test) failed: boom")) << capture.joined();
+  // The failure comes back with the hook's timing (the renderer fails the frame with it);
+  // the hooks that worked carry none.
+  for (const Engine::HookTiming& t : timings)
+    EXPECT_EQ(t.error, t.hook == "throws" ? "pass hook 'throws' (test) failed: boom" : "") << t.hook;
   // TestGood's own hook ran at IndirectDiffuse and its pass carries its origin.
   ASSERT_EQ(graph.passes().size(), 1u);
   EXPECT_EQ(graph.passes()[0].origin, "TestGood");

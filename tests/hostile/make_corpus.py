@@ -10,6 +10,7 @@ case breaks one thing. manifest.txt says what bounce-render must do with each.
 """
 import base64
 import json
+import math
 import os
 import struct
 import sys
@@ -162,6 +163,10 @@ def checked_in():
     write_text("ini_bad_nul.ini", "[SystemSettings]\nr.Shadow.MapSize=5\x0012\n")
     write_text("ini_bad_material_defaults.ini", "[MaterialDefaults]\nUsedWithVxgiVoxelization=perhaps\n")
     write_text("ini_control_bytes.ini", "[SystemSettings]\nr.Shadow.MapSize=\x1b[31mred\x1b[0m\n")
+    # Issue 45: a DDGIVolume of a billion probes (its atlases alone 1.3 TiB): refused as
+    # device memory it would need, naming the setting.
+    write_json("ddgi_probe_counts_1e9.gltf", scene(extra_nodes=[
+        {"name": "Billion", "extras": {"DDGIVolume": {"ProbeCounts": [1000, 1000, 1000]}}}]))
     # Broken plugins: a folder of each, found through BOUNCE_PLUGIN_PATH.
     plugins = {
         "bad_json": ("BadJson", '{"Name": "BadJson", "EngineApiVersion": '),
@@ -197,6 +202,21 @@ def generated(out):
     doc["scenes"][0]["nodes"].append(first)
     with open(os.path.join(out, "deep_hierarchy.gltf"), "w") as f:
         json.dump(doc, f, separators=(",", ":"))
+    # Many point lights above the quad (issue 45): each 1/N of the one light's intensity.
+    for n in (100, 1000):
+        doc = scene()
+        side = int(math.ceil(n ** (1.0 / 3.0)))
+        lights = doc["extensions"]["KHR_lights_punctual"]["lights"]
+        lights[0]["intensity"] = 5.0 / n
+        for i in range(1, n):
+            x, y, z = i % side, (i // side) % side, i // (side * side)
+            lights.append({"name": f"Light{i}", "type": "point", "color": [1, 1, 1], "intensity": 5.0 / n})
+            doc["nodes"].append({"name": f"Light{i}", "translation": [-0.4 + 0.8 * x / side, -0.4 + 0.8 * y / side,
+                                                                      0.2 + 0.8 * z / side],
+                                 "extensions": {"KHR_lights_punctual": {"light": i}}})
+            doc["scenes"][0]["nodes"].append(len(doc["nodes"]) - 1)
+        with open(os.path.join(out, f"lights_{n}.gltf"), "w") as f:
+            json.dump(doc, f, separators=(",", ":"))
     # JSON nested 100,000 deep (parsers that recurse overflow the stack).
     with open(os.path.join(out, "json_deep_nesting.gltf"), "w") as f:
         f.write('{"asset": {"version": "2.0"}, "extras": ' + "[" * 100000 + "]" * 100000 + "}")

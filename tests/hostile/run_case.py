@@ -11,6 +11,7 @@ import os
 import re
 import resource
 import shlex
+import stat
 import subprocess
 import sys
 import tempfile
@@ -18,6 +19,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASES = os.path.join(HERE, "cases")
 MANIFEST = os.path.join(HERE, "manifest.txt")
+SKIPPED = 77  # ctest's SKIP_RETURN_CODE for these tests
 # What the sanitizers print when they find something (they may not change the exit status
 # when a program exits on its own, e.g. a leak found at exit with exitcode=0).
 SANITIZER_REPORT = re.compile(r"ERROR: (AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer)|"
@@ -95,10 +97,26 @@ def main():
     argv = [os.path.abspath(a.render)]
     for x in args:
         x = x.replace("@CASES@", CASES).replace("@GEN@", generated).replace("@SCRATCH@", scratch)
-        if "@FIFO@" in x:
+        if "@FIFO@" in x or "@FIFOLINK@" in x:
             if not os.path.exists(fifo):
                 os.mkfifo(fifo)
             x = x.replace("@FIFO@", fifo)
+        if "@FIFOLINK@" in x:
+            link = os.path.join(scratch, "link-to-fifo.png")
+            if not os.path.lexists(link):
+                os.symlink(fifo, link)
+            x = x.replace("@FIFOLINK@", link)
+        if "@CHARDEV@" in x:
+            # A character device like /dev/null (1, 3), made in the scratch folder: no test
+            # ever names a real /dev path. Making one needs root (CAP_MKNOD).
+            device = os.path.join(scratch, "null-device")
+            if not os.path.exists(device):
+                try:
+                    os.mknod(device, 0o666 | stat.S_IFCHR, os.makedev(1, 3))
+                except PermissionError:
+                    print(f"skipped {a.name}: making a device node needs root")
+                    return SKIPPED
+            x = x.replace("@CHARDEV@", device)
         if x.startswith("env:"):
             key, _, value = x[4:].partition("=")
             env[key] = value

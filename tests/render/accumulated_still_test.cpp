@@ -41,8 +41,9 @@ TEST(SubpixelOffsets, ASquareCountIsTheCellCentresOfAGridAndAnyOtherCoversThePix
     EXPECT_NEAR(mean.x, 0.0, 1e-6) << n;
     EXPECT_NEAR(mean.y, 0.0, 1e-6) << n;
     // Spread in 2D too, not along a diagonal: each quarter within a few points of n/4.
-    if (n >= 20)
+    if (n >= 20) {
       for (uint32_t q : quarter) EXPECT_NEAR(double(q), n / 4.0, 1.0 + 0.05 * n) << n;
+    }
   }
 }
 

@@ -4,14 +4,17 @@
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/barriers.h"
 #include "bounce/gpu/buffer.h"
+#include "bounce/gpu/device_memory.h"
 #include "bounce/gpu/image.h"
 #include "bounce/gpu/pipeline.h"
+#include "bounce/gpu/work_estimate.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace bounce::gpu {
@@ -64,6 +67,41 @@ TEST_F(DeviceTest, BufferUploadAndReadBack) {
     vkCmdCopyBuffer(cmd, local.handle(), back.handle(), 1, &copy);
   });
   EXPECT_EQ(std::memcmp(back.mapped(), data.data(), 1024), 0);
+}
+
+TEST_F(DeviceTest, MemoryBeyondTheHeapIsRefusedByNameBeforeTheDriverIsAsked) {
+  // Four times the largest device-local heap: an input's size, said as such (exit 2 in the
+  // apps), not a VulkanError ("no usable device", exit 1).
+  const uint64_t heap = device->capabilities().limits.deviceLocalHeapBytes;
+  ASSERT_GT(heap, 0u);
+  try {
+    Buffer huge(*device, heap * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUsage::DeviceLocal, "test.huge");
+    FAIL() << "a buffer four times the heap was allocated";
+  } catch (const OutOfDeviceMemory& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("test.huge needs " + formatBytes(heap * 4) + " of device memory"), std::string::npos)
+        << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << "one line";
+  }
+  EXPECT_EQ(device->allocatedBytes(), 0u) << "nothing was left allocated";
+  // The same estimate, made by a plugin before it makes anything.
+  EXPECT_NO_THROW(requireDeviceMemory(&device->capabilities(), heap / 4, "probes", "r.X"));
+  EXPECT_THROW(requireDeviceMemory(&device->capabilities(), heap, "probes", "r.X"), OutOfDeviceMemory);
+  EXPECT_NO_THROW(requireDeviceMemory(nullptr, ~0ull, "probes", "r.X")) << "no device: nothing to hold it to";
+  EXPECT_EQ(formatBytes(512), "512 B");
+  EXPECT_EQ(formatBytes(3u << 20), "3.00 MiB");
+  EXPECT_EQ(formatBytes(uint64_t(1536) << 30), "1.50 TiB");
+}
+
+TEST_F(DeviceTest, WorkThatWillTakeSecondsIsSaidBeforeItRuns) {
+  // A million probes at 256 rays on a CPU device: 2.7·10^8 rays at 10^7 a second.
+  const DeviceCapabilities& caps = device->capabilities();
+  const double rate = estimatedRaysPerSecond(&caps);
+  EXPECT_FALSE(slowFrameWarning(&caps, 0.5 * rate, "probes", "r.X")) << "half a second is not said";
+  const std::optional<std::string> slow = slowFrameWarning(&caps, 30.0 * rate, "DDGI probe updates", "r.X");
+  ASSERT_TRUE(slow);
+  EXPECT_NE(slow->find("about 30 s a frame on '" + caps.name + "' (lower r.X)"), std::string::npos) << *slow;
+  EXPECT_FALSE(slowFrameWarning(&caps, std::nan(""), "probes", "r.X")) << "no estimate, no line";
 }
 
 TEST_F(DeviceTest, ThreeDimensionalImageRoundTrip) {

@@ -10,13 +10,15 @@
 // depth. The camera is the scene's first camera; the aspect ratio comes from W/H.
 // Exit status: 0 success, 1 no usable Vulkan device or a device failure, 2 bad
 // arguments or bad input (one-line reason; bad values in --ini files and requested
-// plugins that fail to start too, unless --keep-going), 3 Vulkan validation errors (when
+// plugins that fail to start too, unless --keep-going; settings or scenes that need more
+// device memory than there is; a frame that failed), 3 Vulkan validation errors (when
 // BOUNCE_VALIDATION=1).
 
 #include "bounce/core/log.h"
 #include "bounce/core/names.h"
 #include "bounce/engine.h"
 #include "bounce/gpu/device.h"
+#include "bounce/gpu/device_memory.h"
 #include "bounce/image/image_buffer.h"
 #include "renderer/render_stats.h"
 #include "renderer/renderer.h"
@@ -171,6 +173,8 @@ int main(int argc, char** argv) {
     }
   } catch (const bounce::gpu::ShaderError& e) {
     return fail(kBadInput, fmt::format("shader error: {}", e.what()));
+  } catch (const bounce::gpu::OutOfDeviceMemory& e) {
+    return fail(kBadInput, e.what());  // the input asked for more than the device has
   } catch (const bounce::gpu::VulkanError& e) {
     return fail(kDeviceFailure, e.what());
   }

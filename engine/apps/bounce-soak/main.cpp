@@ -28,6 +28,7 @@
 #include "bounce/core/names.h"
 #include "bounce/engine.h"
 #include "bounce/gpu/device.h"
+#include "bounce/gpu/device_memory.h"
 #include "renderer/renderer.h"
 
 #include "bounce-soak/soak_animation.h"
@@ -228,6 +229,8 @@ int main(int argc, char** argv) {
       r = soak(o, t, *device, &status);
     } catch (const bounce::gpu::ShaderError& e) {
       return fail(kBadInput, fmt::format("{}: shader error: {}", t, e.what()));
+    } catch (const bounce::gpu::OutOfDeviceMemory& e) {
+      return fail(kBadInput, fmt::format("{}: {}", t, e.what()));
     } catch (const bounce::gpu::VulkanError& e) {
       return fail(kDeviceFailure, fmt::format("{}: {}", t, e.what()));
     }

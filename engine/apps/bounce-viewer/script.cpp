@@ -1,5 +1,7 @@
 #include "script.h"
 
+#include "core/file_kind.h"
+
 #include <fmt/format.h>
 
 #include <cerrno>
@@ -11,6 +13,12 @@
 namespace bounce::viewer {
 
 std::optional<Script> Script::load(const std::string& path, std::string* error) {
+  // A FIFO would block the viewer's start until something wrote to it; a folder reads as
+  // nothing. Only a regular file is a script.
+  if (const std::optional<std::string> kind = notARegularFile(path)) {
+    *error = fmt::format("--script {}: is {}, not a regular file", path, *kind);
+    return std::nullopt;
+  }
   std::ifstream in(path);
   if (!in) {
     *error = fmt::format("--script {}: cannot read it ({})", path, std::strerror(errno));

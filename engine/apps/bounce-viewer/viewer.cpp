@@ -156,7 +156,17 @@ int Viewer::open() {
 
 void Viewer::runLine(const std::string& line, const std::string& origin) {
   log_.add(LineKind::Input, line);
+  // A variable write ("NAME VALUE" or "NAME=VALUE") is remembered with the value it
+  // replaces until a frame has tried it.
+  std::optional<SettingChange> change;
+  if (const std::vector<std::string> words = Console::split(line); !words.empty()) {
+    const std::string name = words[0].substr(0, words[0].find('='));
+    const bool writes = words.size() >= 2 || words[0].find('=') != std::string::npos;
+    if (const CVar* cvar = writes ? engine_->cvars().find(name) : nullptr)
+      change = SettingChange{cvar->name(), cvar->valueText()};
+  }
   const ConsoleResult result = engine_->console().execute(line);
+  if (change && result.ok) untriedChange_ = change;
   for (const std::string& text : result.lines) {
     log_.add(result.ok ? LineKind::Output : LineKind::Error, text);
     // Scripts run unattended: their output and errors also go to the terminal.
@@ -437,6 +447,8 @@ std::optional<ImageBuffer> Viewer::renderScene(VkRect2D rect, const FrameView& f
   std::optional<ImageBuffer> hdr;
   try {
     RenderedFrame frame = renderer_->render(view, outputs, frameIndex_++);
+    if (!frame.gpu.ok()) revertRefusedChange(frame.gpu.errors.front());
+    untriedChange_.reset();
     reportChangedProblems(frame);
     if (auto it = frame.images.find("display"); it != frame.images.end() && !it->second.empty())
       displayed_ = refinement_.add(it->second);
@@ -456,8 +468,21 @@ std::optional<ImageBuffer> Viewer::renderScene(VkRect2D rect, const FrameView& f
     const std::string message = fmt::format("frame failed: {}", e.what());
     if (!reportedProblems_.count(message)) log::error("{}", message);
     reportedProblems_ = {message};
+    revertRefusedChange(e.what());
+    untriedChange_.reset();
   }
   return hdr;
+}
+
+void Viewer::revertRefusedChange(const std::string& error) {
+  // Device::allocate and gpu::requireDeviceMemory say "... of device memory ...".
+  if (!untriedChange_ || error.find("of device memory") == std::string::npos) return;
+  const SettingChange change = *untriedChange_;
+  untriedChange_.reset();
+  const ConsoleResult back = engine_->console().execute(change.name + " " + change.previous);
+  if (back.ok)
+    log::warn("{} kept at {}: the new value needs more device memory than there is", change.name,
+              change.previous);
 }
 
 void Viewer::renderAndPresent() {

@@ -162,6 +162,14 @@ class Viewer {
                                          const RefinementState& refinement);
   void reportFrameRun();
   std::set<std::string> reportedProblems_;  // reported once, again only after they cleared
+  /// The variable a console line last set and its value before, until a frame has run
+  /// with the new one: a frame refused for device memory puts the old value back.
+  struct SettingChange {
+    std::string name, previous;
+  };
+  std::optional<SettingChange> untriedChange_;
+  /// Puts untriedChange_ back when `error` is a refusal for device memory.
+  void revertRefusedChange(const std::string& error);
   std::chrono::steady_clock::time_point lastReloadCheck_{};
   std::chrono::steady_clock::time_point lastFrameTime_{};
 };

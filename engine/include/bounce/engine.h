@@ -117,6 +117,9 @@ class Engine {
     std::string hook;
     std::string origin;
     double milliseconds = 0.0;
+    /// Why the hook failed ("" when it did not): it lost its passes for the frame, and the
+    /// renderer reports the frame as failed (RenderedFrame::gpu.errors).
+    std::string error;
   };
 
   /// Builds one frame's graph: engine stages and plugin hooks in extension-point order.

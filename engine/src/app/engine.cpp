@@ -390,14 +390,16 @@ std::vector<Engine::HookTiming> Engine::buildFrame(RenderGraph& graph, const Fra
     for (const PassHookRegistry::Hook* hook : hooks_.at(point, frame.technique)) {
       graph.setOrigin(point, hook->origin);
       const auto start = std::chrono::steady_clock::now();
+      std::string error;
       try {
         hook->desc.setup(graph, frame);
       } catch (const std::exception& e) {
-        // A failing hook loses its passes for this frame; the frame goes on without them.
-        log::error("pass hook '{}' ({}) failed: {}", hook->desc.name, hook->origin, e.what());
+        // The frame goes on without what the hook set up, and says it failed.
+        error = fmt::format("pass hook '{}' ({}) failed: {}", hook->desc.name, hook->origin, e.what());
+        log::error("{}", error);
       }
       const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-      timings.push_back({hook->desc.name, hook->origin, elapsed.count()});
+      timings.push_back({hook->desc.name, hook->origin, elapsed.count(), std::move(error)});
     }
   };
   engineStage(stages.sceneSetup);

@@ -1,5 +1,9 @@
 #include "bounce/gpu/buffer.h"
 
+#include "bounce/gpu/device_memory.h"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <utility>
 
@@ -13,14 +17,18 @@ Buffer::Buffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage
   ci.size = std::max<VkDeviceSize>(size, 16);
   ci.usage = usage;
   ci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  check(vkCreateBuffer(device_, &ci, nullptr, &buffer_), "vkCreateBuffer");
+  if (VkResult r = vkCreateBuffer(device_, &ci, nullptr, &buffer_); isOutOfMemory(r))
+    throw OutOfDeviceMemory(fmt::format("{} needs {} of device memory, which the driver refused: {}",
+                                        name.empty() ? "a buffer" : name, formatBytes(size), resultName(r)));
+  else
+    check(r, "vkCreateBuffer");
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(device_, buffer_, &req);
   VkMemoryPropertyFlags props = memory == MemoryUsage::DeviceLocal ? VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT
                                                                    : VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
                                                                          VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   try {
-    memory_ = device.allocate(req, props);
+    memory_ = device.allocate(req, props, name);
     check(vkBindBufferMemory(device_, buffer_, memory_.memory(), 0), "vkBindBufferMemory");
   } catch (...) {
     reset();

@@ -1,4 +1,5 @@
 #include "bounce/gpu/device.h"
+#include "bounce/gpu/device_memory.h"
 
 #include "bounce/core/log.h"
 #include "bounce/core/names.h"
@@ -352,10 +353,18 @@ std::unique_ptr<Device> Device::create(const DeviceOptions& options, std::string
   caps.limits.maxComputeSharedMemorySize = limits.maxComputeSharedMemorySize;
   caps.limits.maxComputeWorkGroupInvocations = limits.maxComputeWorkGroupInvocations;
   caps.limits.maxPushConstantsSize = limits.maxPushConstantsSize;
-  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceMaintenance3Properties maintenance3{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES,
+                                              &maintenance3};
   VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
   vkGetPhysicalDeviceProperties2(best, &properties2);
   caps.limits.subgroupSize = subgroup.subgroupSize;
+  caps.limits.maxMemoryAllocationSize = maintenance3.maxMemoryAllocationSize;
+  for (uint32_t i = 0; i < d->memory_.memoryHeapCount; ++i)
+    if (d->memory_.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      caps.limits.deviceLocalHeapBytes =
+          std::max<uint64_t>(caps.limits.deviceLocalHeapBytes, d->memory_.memoryHeaps[i].size);
 
   std::vector<const char*> deviceExts{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
   if (hasAtomicFloat) deviceExts.push_back(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
@@ -439,7 +448,8 @@ bool Device::supportsFormat(VkFormat format, VkFormatFeatureFlags wanted, bool o
   return (have & wanted) == wanted;
 }
 
-Allocation Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags props) const {
+Allocation Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags props,
+                            std::string_view what) const {
   uint32_t type = ~0u;
   for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
     if (!(req.memoryTypeBits & (1u << i))) continue;
@@ -449,11 +459,28 @@ Allocation Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFla
     }
   }
   if (type == ~0u) throw VulkanError("finding a memory type", VK_ERROR_OUT_OF_DEVICE_MEMORY);
+  // A block its heap cannot hold is refused before the driver is asked (lavapipe takes its
+  // memory from the system's, and could grant far more than its 2 GiB heap and then be
+  // killed for it). Blocks that fit one by one are left to the driver: a heap's size is
+  // what it holds at best, not a budget the engine tracks for it.
+  const std::string label = what.empty() ? std::string("a resource") : std::string(what);
+  const uint64_t heap = memory_.memoryHeaps[memory_.memoryTypes[type].heapIndex].size;
+  const uint64_t largest = capabilities_.limits.maxMemoryAllocationSize;
+  auto refuse = [&](std::string_view why) {
+    return OutOfDeviceMemory(
+        fmt::format("{} needs {} of device memory, {} ({})", label, formatBytes(req.size), why, name_));
+  };
+  if (req.size > heap) throw refuse(fmt::format("more than the device's {} heap", formatBytes(heap)));
+  if (largest && req.size > largest)
+    throw refuse(fmt::format("more than the {} one allocation may take", formatBytes(largest)));
   VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   ai.allocationSize = req.size;
   ai.memoryTypeIndex = type;
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  check(vkAllocateMemory(device_, &ai, nullptr, &memory), "vkAllocateMemory");
+  if (VkResult r = vkAllocateMemory(device_, &ai, nullptr, &memory); isOutOfMemory(r))
+    throw refuse(fmt::format("which the driver could not allocate: {}", resultName(r)));
+  else
+    check(r, "vkAllocateMemory");
   void* mapped = nullptr;
   if (memory_.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) {
     if (VkResult r = vkMapMemory(device_, memory, 0, VK_WHOLE_SIZE, 0, &mapped); r != VK_SUCCESS) {

@@ -1,6 +1,9 @@
 #include "bounce/gpu/image.h"
 
 #include "bounce/gpu/buffer.h"
+#include "bounce/gpu/device_memory.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,11 +49,16 @@ Image::Image(const Device& device, const TextureDesc& desc, VkImageUsageFlags us
   ci.usage = usage;
   ci.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   if (desc_.type == TextureType::Cube) ci.flags |= VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
-  check(vkCreateImage(device_, &ci, nullptr, &image_), "vkCreateImage");
+  if (VkResult r = vkCreateImage(device_, &ci, nullptr, &image_); isOutOfMemory(r))
+    throw OutOfDeviceMemory(fmt::format("{} needs {} of device memory, which the driver refused: {}",
+                                        name.empty() ? "an image" : name, formatBytes(textureBytes(desc_)),
+                                        resultName(r)));
+  else
+    check(r, "vkCreateImage");
   try {
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device_, image_, &req);
-    memory_ = device.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    memory_ = device.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name);
     check(vkBindImageMemory(device_, image_, memory_.memory(), 0), "vkBindImageMemory");
     const uint32_t layers = ci.arrayLayers;
     // Views need a usage that reads or writes through them; transfer-only images have none.

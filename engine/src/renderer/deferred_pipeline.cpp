@@ -1,6 +1,9 @@
 #include "renderer/deferred_pipeline.h"
 
+#include "bounce/core/log.h"
 #include "bounce/gpu/barriers.h"
+#include "bounce/gpu/device_capabilities.h"
+#include "bounce/gpu/device_memory.h"
 #include "bounce/gpu/image.h"
 #include "bounce/gpu/pass_context.h"
 #include "bounce/graph/channels.h"
@@ -19,6 +22,19 @@ namespace {
 
 constexpr const char* kShaders = "engine/src/renderer/shaders/";
 gpu::ShaderSource shader(const char* file) { return {std::string(kShaders) + file, {}}; }
+
+/// One layer of channels::ShadowMatrices, as bounce/lights.glsl's ShadowMapView (std430).
+struct ShadowMapView {
+  glm::mat4 viewProjection;
+  glm::vec4 tile;  ///< corner (u, v) and side in a page's [0, 1] coordinates, page
+};
+static_assert(sizeof(ShadowMapView) == 80);
+
+/// A tile's texels in its page.
+VkRect2D tileRect(const glm::vec4& tile, uint32_t pageTexels) {
+  const auto texels = [pageTexels](float uv) { return uint32_t(std::lround(double(uv) * pageTexels)); };
+  return {{int32_t(texels(tile.x)), int32_t(texels(tile.y))}, {texels(tile.z), texels(tile.z)}};
+}
 
 /// Whether any of `box` may lie inside the clip volume of `m` (Vulkan's: |x|, |y| ≤ w,
 /// 0 ≤ z ≤ w): false only when all eight corners are outside one of its planes, which
@@ -108,23 +124,42 @@ EngineStages DeferredPipeline::stages(const FrameOutputs& outputs, Readbacks* re
   return s;
 }
 
+ShadowAtlasLimits DeferredPipeline::shadowAtlasLimits(const FrameContext& frame) const {
+  ShadowAtlasLimits limits;
+  limits.pageTexels = uint32_t(std::max(settings_.shadowMapSize.get(), 1));
+  limits.minTexels = uint32_t(std::max(settings_.shadowMinResolution.get(), 1));
+  // The budget, and never more than a technique may take of the device's memory.
+  limits.budgetBytes = std::min(uint64_t(std::max(settings_.shadowMemoryBudgetMB.get(), 1)) << 20,
+                                gpu::deviceMemoryBudget(frame.device));
+  if (frame.device && frame.device->limits.maxImageArrayLayers > 0)
+    limits.maxPages = frame.device->limits.maxImageArrayLayers;
+  return limits;
+}
+
 void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) const {
   Blackboard& bb = g.blackboard();
-  const uint32_t mapSize = uint32_t(settings_.shadowMapSize.get());
   // Cascades are placed from the camera alone (GI plugins' voxelization reads the
   // whole-scene map, which does not move with it).
   const ShadowCascades cascades{uint32_t(std::max(settings_.shadowCascades.get(), 0)),
                                 settings_.shadowCascadeExponent.get()};
-  auto lights =
-      std::make_shared<const LightSetup>(LightSetup::build(frame.scene, mapSize, frame.view, cascades));
+  auto lights = std::make_shared<const LightSetup>(
+      LightSetup::build(frame.scene, shadowAtlasLimits(frame), frame.view, cascades));
+  if (shadowCache_->unshadowedChanged(lights->unshadowedLights) && lights->unshadowedLights > 0 &&
+      !frame.setting(settings_.rayTracedShadows))
+    log::warn(
+        "{} of {} shadow-casting lights have no shadow map: the shadow atlas's {} MiB "
+        "(r.Shadow.MemoryBudgetMB) hold the others at r.Shadow.MinResolution {}; they light "
+        "unshadowed (r.RayTracing.Shadows 1 shadows every light)",
+        lights->unshadowedLights,
+        std::ranges::count_if(frame.scene.lights(), [](const Light& l) { return l.castShadows; }),
+        settings_.shadowMemoryBudgetMB.get(), settings_.shadowMinResolution.get());
 
   // Lights and shadow matrices, uploaded inside the frame so every reader is ordered
   // after the copy by the graph's barriers.
   g.addPass("SceneLights", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const uint64_t lightBytes =
         std::max<uint64_t>(lights->lights.size() * sizeof(GpuLight), sizeof(GpuLight));
-    const uint64_t matrixBytes =
-        std::max<uint64_t>(lights->shadowMatrices.size() * sizeof(glm::mat4), sizeof(glm::mat4));
+    const uint64_t matrixBytes = std::max<uint64_t>(lights->shadowLayers(), 1) * sizeof(ShadowMapView);
     BufferHandle lightBuf = b.write(b.createBuffer("scene.lights", {lightBytes}), Access::TransferDst);
     BufferHandle matrixBuf =
         b.write(b.createBuffer("scene.shadowMatrices", {matrixBytes}), Access::TransferDst);
@@ -135,23 +170,28 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
       if (!lights->lights.empty())
         updateBuffer(ctx.cmd(), ctx.buffer(lightBuf).handle(), lights->lights.data(),
                      lights->lights.size() * sizeof(GpuLight));
-      if (!lights->shadowMatrices.empty())
-        updateBuffer(ctx.cmd(), ctx.buffer(matrixBuf).handle(), lights->shadowMatrices.data(),
-                     lights->shadowMatrices.size() * sizeof(glm::mat4));
+      if (lights->shadowLayers() > 0) {
+        std::vector<ShadowMapView> views(lights->shadowLayers());
+        for (size_t i = 0; i < views.size(); ++i)
+          views[i] = {lights->shadowMatrices[i], lights->shadowTiles[i]};
+        updateBuffer(ctx.cmd(), ctx.buffer(matrixBuf).handle(), views.data(),
+                     views.size() * sizeof(ShadowMapView));
+      }
     };
   });
 
   const uint32_t layers = lights->shadowLayers();
+  const uint32_t pages = lights->pages, pageTexels = lights->pageTexels;
   const float slopeBias = settings_.shadowDepthBias.get();
   // Without shadow-casting lights the maps are one cleared 1×1 layer (depth 1: lit), so a
   // reader always binds a depth array, whatever the scene.
   const TextureDesc desc{.type = TextureType::Tex2DArray,
                          .format = VK_FORMAT_D32_SFLOAT,
-                         .width = layers ? mapSize : 1u,
-                         .height = layers ? mapSize : 1u,
-                         .layers = std::max(1u, layers)};
+                         .width = pages ? pageTexels : 1u,
+                         .height = pages ? pageTexels : 1u,
+                         .layers = std::max(1u, pages)};
   ShadowMapCache& cache = *shadowCache_;
-  const uint64_t key = ShadowMapCache::key(frame.scene, lights->shadowMatrices, mapSize, slopeBias);
+  const uint64_t key = ShadowMapCache::key(frame.scene, *lights, slopeBias);
   TextureHandle maps = g.importTexture(cache.maps(desc));  // first: a new size re-creates them
   const bool cached = settings_.cacheShadowMaps.get() && cache.holds(key);
   const uint64_t frameIndex = frame.frameIndex;
@@ -160,13 +200,14 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
     maps = b.write(maps, Access::DepthAttachment);
     bb.setTexture(channels::ShadowMaps, maps);
     const uint64_t drawnAt = cache.drawnAt();
-    b.condition([layers, cached, drawnAt] {
+    b.condition([layers, pages, cached, drawnAt] {
       if (cached)
         return PassDecision::skip(fmt::format(
             "shadow maps unchanged since frame {} (static geometry, still lights; r.Shadow.CacheStaticMaps)",
             drawnAt));
-      return PassDecision::run(layers ? fmt::format("{} shadow-map layers", layers)
-                                      : std::string("no shadow-casting lights: one cleared 1×1 layer"));
+      return PassDecision::run(
+          layers ? fmt::format("{} shadow maps in {} atlas page{}", layers, pages, pages == 1 ? "" : "s")
+                 : std::string("no shadow-casting lights: one cleared 1×1 layer"));
     });
     ShadowMapCache* drawn = &cache;
     return [=](PassContext& ctx) {
@@ -191,26 +232,40 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
       common.buffer("SceneInstances", ctx.scene().instances());
       gpu::Bindings maskedCommon = common;
       maskedCommon.buffer("SceneMaterials", ctx.scene().materials());
-      for (uint32_t layer = 0; layer < layers; ++layer) {
-        ctx.beginRendering({.depth = DepthTarget{maps, 1.0f}, .layer = layer});
+      // Each page cleared once, then every tile in it drawn through its own viewport.
+      for (uint32_t page = 0; page < pages; ++page) {
+        ctx.beginRendering({.depth = DepthTarget{maps, 1.0f}, .layer = page});
         // Slope-scaled bias in depth units per texel of slope, plus one unit of depth
         // resolution: removes acne without visibly detaching contact shadows.
         vkCmdSetDepthBias(ctx.cmd(), 1.0f, 0.0f, slopeBias);
-        glm::mat4 m = lights->shadowMatrices[layer];
-        // Only what the layer sees: a cascade near the camera holds few of the scene's draws.
-        ctx.drawScene(
-            opaque, common,
-            [&m](const gpu::GpuDraw& d) { return !d.alphaMasked && inClipVolume(m, d.worldBounds); }, &m,
-            sizeof(m));
-        if (masked)
+        for (uint32_t layer = 0; layer < layers; ++layer) {
+          const glm::vec4 tile = lights->shadowTiles[layer];
+          if (uint32_t(tile.w) != page) continue;
+          const VkRect2D rect = tileRect(tile, pageTexels);
+          const VkViewport viewport{float(rect.offset.x),
+                                    float(rect.offset.y),
+                                    float(rect.extent.width),
+                                    float(rect.extent.height),
+                                    0.0f,
+                                    1.0f};
+          vkCmdSetViewport(ctx.cmd(), 0, 1, &viewport);
+          vkCmdSetScissor(ctx.cmd(), 0, 1, &rect);
+          glm::mat4 m = lights->shadowMatrices[layer];
+          // Only what the layer sees: a cascade near the camera holds few of the scene's draws.
           ctx.drawScene(
-              *masked, maskedCommon,
-              [&m](const gpu::GpuDraw& d) { return d.alphaMasked && inClipVolume(m, d.worldBounds); }, &m,
+              opaque, common,
+              [&m](const gpu::GpuDraw& d) { return !d.alphaMasked && inClipVolume(m, d.worldBounds); }, &m,
               sizeof(m));
+          if (masked)
+            ctx.drawScene(
+                *masked, maskedCommon,
+                [&m](const gpu::GpuDraw& d) { return d.alphaMasked && inClipVolume(m, d.worldBounds); }, &m,
+                sizeof(m));
+        }
         ctx.endRendering();
       }
-      // Each layer's depth cleared and stored once (overdraw's depth tests not counted).
-      ctx.addWork(WorkUnit::ImageBytes, uint64_t(mapSize) * mapSize * layers * sizeof(float));
+      // Each page's depth cleared and stored once (overdraw's depth tests not counted).
+      ctx.addWork(WorkUnit::ImageBytes, uint64_t(pageTexels) * pageTexels * pages * sizeof(float));
     };
   });
 }

@@ -9,6 +9,7 @@
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/image.h"
 #include "bounce/renderer/renderer_settings.h"
+#include "renderer/shadow_atlas.h"
 
 #include <map>
 #include <memory>
@@ -57,6 +58,9 @@ class DeferredPipeline {
 
  private:
   void sceneSetup(RenderGraph& graph, const FrameContext& frame) const;
+  /// The shadow atlas's page size, smallest tile and budget: the r.Shadow settings within
+  /// what the device holds.
+  ShadowAtlasLimits shadowAtlasLimits(const FrameContext& frame) const;
   void geometry(RenderGraph& graph, const FrameContext& frame) const;
   void lighting(RenderGraph& graph, const FrameContext& frame) const;
   void postProcess(RenderGraph& graph, const FrameContext& frame) const;

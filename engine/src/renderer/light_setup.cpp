@@ -93,6 +93,21 @@ float sceneFarDepth(const ViewFrustum& f, const Aabb& scene) {
   return far;
 }
 
+/// The tile side a point or spot light would use: the screen pixels its sphere of influence
+/// spans (its glTF range, or the scene's diameter where it has none, since it then lights
+/// everything), every texel it may have when the camera is inside that sphere or the view
+/// is orthographic.
+float screenTexels(const Light& l, const ViewFrustum& f, float sceneRadius, uint32_t viewHeight) {
+  constexpr float kAll = 1e9f;
+  if (!f.valid) return kAll;
+  const float reach = l.range > 0.0f ? l.range : 2.0f * sceneRadius;
+  const float d = glm::length(l.position - f.position);
+  if (!std::isfinite(d) || !std::isfinite(reach) || d <= reach * 1.0001f) return kAll;
+  // The sphere's angular radius a has tan a = R / sqrt(d² − R²); the view's half height is tanY.
+  const float tangent = reach / std::sqrt(d * d - reach * reach);
+  return std::min(kAll, tangent / f.tanY * float(viewHeight));  // the sphere's diameter in pixels
+}
+
 }  // namespace
 
 std::vector<float> cascadeSplits(float near, float far, const ShadowCascades& cascades) {
@@ -108,7 +123,7 @@ std::vector<float> cascadeSplits(float near, float far, const ShadowCascades& ca
   return splits;
 }
 
-LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize, const FrameView& view,
+LightSetup LightSetup::build(const Scene& scene, const ShadowAtlasLimits& atlas, const FrameView& view,
                              const ShadowCascades& cascades) {
   LightSetup out;
   Aabb bounds = scene.bounds();
@@ -118,7 +133,6 @@ LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize, const FrameVi
   const float radius = std::max(0.5f * glm::length(bounds.size()), 0.01f);
   // Near planes in proportion to the scene: depth precision follows far/near.
   const float near = std::max(1e-3f * radius, 1e-3f);
-  const float size = float(std::max(1u, mapSize));
   // Cascades cover the view from its near plane to the farthest point of the scene ahead.
   const ViewFrustum frustum = viewFrustum(view);
   const float farDepth = frustum.valid ? sceneFarDepth(frustum, bounds) : 0.0f;
@@ -126,6 +140,24 @@ LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize, const FrameVi
   const std::vector<float> splits =
       cascaded ? cascadeSplits(frustum.near, farDepth, cascades) : std::vector<float>{};
 
+  // What each shadow-casting light asks of the atlas: suns first and whole, then point and
+  // spot lights by the screen they can reach.
+  std::vector<ShadowRequest> requests;
+  for (const Light& l : scene.lights()) {
+    if (!l.castShadows) continue;
+    if (l.type == LightType::Directional)
+      requests.push_back({uint32_t(1 + (splits.empty() ? 0 : splits.size() - 1)), atlas.pageTexels, 3e38f});
+    else {
+      const float texels = screenTexels(l, frustum, radius, view.height);
+      requests.push_back({l.type == LightType::Point ? 6u : 1u, uint32_t(std::min(texels, 1e9f)), texels});
+    }
+  }
+  const ShadowAtlasPlan plan = planShadowAtlas(requests, atlas);
+  out.pageTexels = plan.pageTexels;
+  out.pages = plan.pages;
+  out.unshadowedLights = plan.dropped;
+
+  size_t request = 0;
   for (const Light& l : scene.lights()) {
     GpuLight g{};
     const glm::vec3 dir = safeDirection(l.direction);
@@ -137,7 +169,9 @@ LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize, const FrameVi
     const float inner = std::clamp(l.innerConeAngle, 0.0f, 1.5707963f);
     const float outer = std::clamp(std::max(l.outerConeAngle, inner), 0.0f, 1.5707963f);
     g.params = glm::vec4(std::cos(inner), std::cos(outer), 0.0f, 0.0f);
-    if (l.castShadows) {
+    const uint32_t tile = l.castShadows ? plan.granted[request++] : 0u;
+    if (tile > 0) {
+      const float size = float(tile);
       g.intensity.w = float(out.shadowMatrices.size());
       if (l.type == LightType::Directional) {
         // Orthographic box around the scene's bounding sphere, looking along the light:
@@ -183,6 +217,7 @@ LightSetup LightSetup::build(const Scene& scene, uint32_t mapSize, const FrameVi
     }
     out.lights.push_back(g);
   }
+  out.shadowTiles = plan.tiles;
   return out;
 }
 

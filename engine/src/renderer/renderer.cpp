@@ -86,6 +86,12 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
   };
   out.cpu = engine_.buildFrame(graph, frame, stages);
   out.gpu = gpu::runFrame(*executor_, graph, frame, *scene_, &out.graph);
+  // A hook that failed (a setting asking for more memory than the device has, say) fails
+  // the frame, first among its errors: what it would have drawn is missing.
+  std::vector<std::string> hookErrors;
+  for (const Engine::HookTiming& t : out.cpu)
+    if (!t.error.empty()) hookErrors.push_back(t.error);
+  out.gpu.errors.insert(out.gpu.errors.begin(), hookErrors.begin(), hookErrors.end());
   // After the frame: its read-backs may have added notes (lateSettlingNotes).
   out.settling = settlingNotes(graph);
   engine_.events().frameCompleted.emit({frameIndex, view, out.gpu.frameMilliseconds, out.gpu.ok()});

@@ -31,9 +31,29 @@ RendererSettings::RendererSettings(CVarRegistry& cvars)
     : shadowMapSize(
           cvars.add<int32_t>({.name = "r.Shadow.MapSize",
                               .defaultValue = 1024,
-                              .help = "Texels per side of each shadow map (cube faces for point lights).",
+                              .help = "Texels per side of the largest shadow map (a cube face for point "
+                                      "lights), which a light whose reach fills the screen gets; lights "
+                                      "covering less of it get smaller maps, down to "
+                                      "r.Shadow.MinResolution. Also the side of the shadow atlas's pages.",
                               .allowed = {256, 512, 1024, 2048, 4096},
                               .category = "Renderer|Shadows"})),
+      shadowMinResolution(cvars.add<int32_t>(
+          {.name = "r.Shadow.MinResolution",
+           .defaultValue = 32,
+           .help = "Texels per side of the smallest shadow map a light gets, however little of the screen "
+                   "it reaches or however many lights share the atlas (Unreal's name and default).",
+           .allowed = {16, 32, 64, 128, 256, 512, 1024},
+           .category = "Renderer|Shadows"})),
+      shadowMemoryBudgetMB(cvars.add<int32_t>(
+          {.name = "r.Shadow.MemoryBudgetMB",
+           .defaultValue = 256,
+           .help = "Most device memory the shadow atlas takes, in MiB. Over it, every light's maps shrink "
+                   "together down to r.Shadow.MinResolution, then the lights that reach the least of the "
+                   "screen go without a shadow map (a warning says how many; r.RayTracing.Shadows 1 "
+                   "shadows every light without maps).",
+           .min = 1.0,
+           .max = 65536.0,
+           .category = "Renderer|Shadows"})),
       shadowDepthBias(cvars.add<float>(
           {.name = "r.Shadow.DepthBias",
            .defaultValue = 1.5f,

@@ -2,10 +2,11 @@
 
 #include "bounce/core/value_hash.h"
 
+#include <algorithm>
+
 namespace bounce {
 
-uint64_t ShadowMapCache::key(const Scene& scene, const std::vector<glm::mat4>& shadowMatrices,
-                             uint32_t mapSize, float slopeBias) {
+uint64_t ShadowMapCache::key(const Scene& scene, const LightSetup& lights, float slopeBias) {
   ValueHash h;
   // The scene's address and revisions tell edits apart; a scene loaded where another
   // was freed could reuse both, which its triangle count and bounds then tell apart.
@@ -19,16 +20,24 @@ uint64_t ShadowMapCache::key(const Scene& scene, const std::vector<glm::mat4>& s
       h.add(m.alphaCutoff).add(m.baseColorFactor.a).add(m.baseColorTexture.texture);
   const Aabb bounds = scene.bounds();
   for (int axis = 0; axis < 3; ++axis) h.add(bounds.min[axis]).add(bounds.max[axis]);
-  h.add(mapSize).add(slopeBias).add(shadowMatrices.size());
-  for (const glm::mat4& m : shadowMatrices)
+  h.add(lights.pageTexels).add(lights.pages).add(slopeBias).add(lights.shadowMatrices.size());
+  for (const glm::mat4& m : lights.shadowMatrices)
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) h.add(m[c][r]);
+  for (const glm::vec4& t : lights.shadowTiles) h.add(t.x).add(t.y).add(t.z).add(t.w);
   return h.value();
 }
 
 PersistentTexture& ShadowMapCache::maps(const TextureDesc& desc) {
   if (!texture_) texture_.emplace("ShadowMaps", desc);
-  texture_->setDesc(desc);
+  // Pages are kept when fewer will do: a moving camera resizes lights' tiles, and an atlas
+  // re-made at every step churned the driver's heap (the soak's RSS grew 9 MiB over 150
+  // frames). It grows to the most pages a scene has needed, within r.Shadow.MemoryBudgetMB.
+  TextureDesc kept = desc;
+  const TextureDesc& now = texture_->desc();
+  if (now.format == desc.format && now.width == desc.width && now.height == desc.height && desc.width > 1)
+    kept.layers = std::max(desc.layers, now.layers);
+  texture_->setDesc(kept);
   return *texture_;
 }
 

@@ -15,6 +15,8 @@
 
 #include <bounce/core/log.h>
 #include <bounce/frame/settling.h>
+#include <bounce/gpu/device_memory.h>
+#include <bounce/gpu/work_estimate.h>
 #include <bounce/graph/channels.h>
 #include <bounce/plugin/plugin.h>
 #include <bounce/plugin/plugin_context.h>
@@ -93,8 +95,14 @@ class DdgiPlugin final : public Plugin {
     std::vector<VolumeFrameState>& frames = graph.blackboard().set(kVolumeFrames, {});
     std::vector<std::string> problems;
     const ProbeFormat format = settings_.format();
+    // Probe counts bounded by the device's memory and by the rays a full update traces
+    // (wide distance moments counted: the grid decides them).
+    ProbeFormat widest = format;
+    widest.wideDistance = true;
+    const uint64_t limit = maxProbes(gpu::deviceMemoryBudget(frame.device), widest.bytesPerProbe(),
+                                     uint32_t(settings_.raysPerProbe.get()));
     specs_ = volumeSpecs(frame.scene, settings_.probeSpacing.get(), format.irradianceTexels(),
-                         format.distanceTexels(), problems);
+                         format.distanceTexels(), problems, limit);
     for (const std::string& p : problems)
       if (reported_.insert(p).second) log::warn("DDGI: {}", p);
     // Volumes keep their state by position; a scene with another set of volumes starts afresh.
@@ -108,6 +116,12 @@ class DdgiPlugin final : public Plugin {
       VolumeFrameState f;
       f.plan = volume.plan(frame, specs_[i], settings_, lighting);
       f.suffix = specs_.size() == 1 ? std::string() : " [" + specs_[i].name + "]";
+      // Legal but enormous (a million probes updated at once): said once, before it runs.
+      const double rays = double(f.plan.probesUpdated()) * double(f.plan.raysPerProbe());
+      if (auto slow =
+              gpu::slowFrameWarning(frame.device, rays, "DDGI probe updates" + f.suffix,
+                                    "r.DDGI.ProbeUpdateBudget, r.DDGI.RaysPerProbe or the probe count"))
+        if (reported_.insert(*slow).second) log::warn("DDGI: {}", *slow);
       if (!f.plan.settling.empty()) noteSettling(graph, "DDGI" + f.suffix + ": " + f.plan.settling);
       f.volume = addUpdatePasses(graph, shaders_, f.plan, volume.textures(), volume.textures().import(graph),
                                  f.suffix);

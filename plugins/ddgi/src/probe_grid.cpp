@@ -41,9 +41,11 @@ float automaticSpacing(const Aabb& box) {
   return std::isfinite(longest) && longest > 0.0f ? longest / 6.0f : 1.0f;
 }
 
-ProbeGrid fitGrid(const Aabb& box, float maxSpacing) {
+namespace {
+
+/// fitGrid without the limit on the total.
+ProbeGrid fitCells(const Aabb& box, float maxSpacing) {
   ProbeGrid g;
-  if (!std::isfinite(maxSpacing) || maxSpacing <= 0.0f) maxSpacing = automaticSpacing(box);
   const glm::vec3 size = box.empty() ? glm::vec3(0.0f) : box.size();
   g.center = box.center();
   for (int a = 0; a < 3; ++a) {
@@ -60,6 +62,35 @@ ProbeGrid fitGrid(const Aabb& box, float maxSpacing) {
     g.spacing[a] = size[a] / float(g.counts[a]);
   }
   return g;
+}
+
+double probeCount(const ProbeGrid& g) { return double(g.counts.x) * double(g.counts.y) * double(g.counts.z); }
+
+}  // namespace
+
+float spacingForProbeLimit(const Aabb& box, float spacing, uint64_t maxProbes) {
+  if (!std::isfinite(spacing) || spacing <= 0.0f) spacing = automaticSpacing(box);
+  const double limit = double(std::max<uint64_t>(maxProbes, 8));
+  // The count falls as the cube of the spacing; each step grows the spacing by the cube
+  // root of the excess (and a little, so rounding cells up cannot stall it). Eight probes,
+  // the least any grid has, always fit, so this ends; 64 steps bound it anyway.
+  for (int step = 0; step < 64; ++step) {
+    const double count = probeCount(fitCells(box, spacing));
+    if (count <= limit) break;
+    spacing *= float(std::max(std::cbrt(count / limit), 1.0) * 1.001);
+  }
+  return spacing;
+}
+
+ProbeGrid fitGrid(const Aabb& box, float maxSpacing, uint64_t maxProbes) {
+  return fitCells(box, spacingForProbeLimit(box, maxSpacing, maxProbes));
+}
+
+uint64_t maxProbes(uint64_t budgetBytes, uint32_t bytesPerProbe, uint32_t raysPerProbe) {
+  const uint64_t rays = std::max<uint32_t>(raysPerProbe, 1);
+  // Each probe's atlases and data, and its rays' 16-byte records when all update at once.
+  const uint64_t perProbe = std::max<uint64_t>(uint64_t(bytesPerProbe) + 16 * rays, 1);
+  return std::max<uint64_t>(std::min(budgetBytes / perProbe, kMaxRaysPerUpdate / rays), 8);
 }
 
 bool needsWideDistance(const ProbeGrid& grid) {

@@ -38,8 +38,19 @@ struct ProbeGrid {
 
 /// The grid for a box: probe planes at most `maxSpacing` apart and the outermost probes
 /// half a spacing inside every face, at least 2 probes per axis (a flat box still gets a
-/// cage of two planes `maxSpacing` apart around its centre).
-ProbeGrid fitGrid(const Aabb& box, float maxSpacing);
+/// cage of two planes `maxSpacing` apart around its centre), at most 1024 per axis, and at
+/// most `maxProbes` in all (the spacing grows until they fit: spacingForProbeLimit).
+ProbeGrid fitGrid(const Aabb& box, float maxSpacing, uint64_t maxProbes = UINT64_MAX);
+
+/// The smallest spacing, `spacing` or more, at which fitGrid places at most `maxProbes`
+/// probes in `box` (`spacing` itself when it already does; at least 8 probes always fit).
+float spacingForProbeLimit(const Aabb& box, float spacing, uint64_t maxProbes);
+
+/// The most probes one volume may have: its persistent data and one update's rays within
+/// deviceMemoryBudget (`budgetBytes`), and a full update at most kMaxRaysPerUpdate rays
+/// (2^28: a million probes at 256 rays; a minute of lavapipe, seconds on a GPU).
+inline constexpr uint64_t kMaxRaysPerUpdate = uint64_t(1) << 28;
+uint64_t maxProbes(uint64_t budgetBytes, uint32_t bytesPerProbe, uint32_t raysPerProbe);
 
 /// The spacing `fitGrid` uses when r.DDGI.ProbeSpacing is 0: the longest side / 6 (six
 /// probes across a room, the note's Cornell-box example; RTXGI recommends one probe every

@@ -3,6 +3,7 @@
 #include "convergence.h"
 
 #include <bounce/core/value_hash.h>
+#include <bounce/gpu/device_memory.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -84,6 +85,19 @@ VolumePlan ProbeVolume::plan(const FrameContext& frame, const VolumeSpec& spec, 
   if (spec.followCamera) {
     cell = glm::ivec3(glm::round((frame.view.position - spec.grid.center) / spec.grid.spacing));
     plan.grid.center = spec.grid.center + glm::vec3(cell) * spec.grid.spacing;
+  }
+  {
+    // Refused before anything is made: a grid of explicit ProbeCounts, or texels per probe,
+    // can ask for more than the device holds (spacings were already bounded: volume_specs).
+    const uint32_t rays = uint32_t(spec.raysPerProbe.value_or(settings.raysPerProbe.get()));
+    const uint64_t probes = plan.grid.probeCount();
+    const uint64_t updated = std::min<uint64_t>(
+        probes, settings.updateBudget.get() > 0 ? uint64_t(settings.updateBudget.get()) : probes);
+    gpu::requireDeviceMemory(
+        frame.device, probes * plan.format.bytesPerProbe() + updated * rays * 16,
+        fmt::format("DDGI volume '{}' ({} probes, {} rays each)", spec.name, probes, rays),
+        "ProbeCounts or ProbeSpacing, r.DDGI.ProbeSpacing, r.DDGI.RaysPerProbe, "
+        "r.DDGI.IrradianceTexels");
   }
   plan.reset = textures_.configure(plan.grid, plan.format);
   const bool sameCells = plan.grid.spacing == grid_.spacing && plan.grid.counts == grid_.counts;

@@ -71,8 +71,21 @@ void reportMistypedFields(const SceneVolume& v, const std::string& name, std::ve
 }  // namespace
 
 std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, uint32_t irradianceTexels,
-                                    uint32_t distanceTexels, std::vector<std::string>& problems) {
+                                    uint32_t distanceTexels, std::vector<std::string>& problems,
+                                    uint64_t maxProbes) {
   std::vector<VolumeSpec> specs;
+  // A spacing too fine for the device is widened, with a line saying so (a probe count in
+  // ProbeCounts is the user's own, and is refused by the plan's memory check instead).
+  auto fitted = [&](const Aabb& box, float spacing, const std::string& name, const char* setting) {
+    const float requested = spacing > 0.0f && std::isfinite(spacing) ? spacing : automaticSpacing(box);
+    const float bounded = spacingForProbeLimit(box, requested, maxProbes);
+    if (bounded > requested)
+      problems.push_back(fmt::format(
+          "{}: {} {} m would place more probes than the {} this device can trace and hold; spaced {:.3g} m "
+          "apart instead",
+          name, setting, requested, maxProbes, bounded));
+    return fitGrid(box, bounded);
+  };
   for (const SceneVolume* v : scene.volumes(kVolumeKind)) {
     if (v->flag("Enabled") == false) continue;
     VolumeSpec s;
@@ -99,7 +112,9 @@ std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, ui
       if (spacing && !(*spacing > 0.0))
         problems.push_back(fmt::format(
             "DDGIVolume '{}': ProbeSpacing {} is not a spacing; using the r.DDGI setting", s.name, *spacing));
-      s.grid = fitGrid(box, spacing && *spacing > 0.0 ? float(*spacing) : defaultSpacing);
+      const bool own = spacing && *spacing > 0.0;
+      s.grid = fitted(box, own ? float(*spacing) : defaultSpacing, fmt::format("DDGIVolume '{}'", s.name),
+                      own ? "ProbeSpacing" : "r.DDGI.ProbeSpacing");
     }
     if (std::string error = s.grid.validate(irradianceTexels, distanceTexels); !error.empty()) {
       problems.push_back(fmt::format("DDGIVolume '{}': {}; left out", s.name, error));
@@ -114,14 +129,15 @@ std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, ui
     specs.push_back(std::move(s));
   }
   if (!specs.empty() || !scene.volumes(kVolumeKind).empty()) return specs;
-  VolumeSpec fitted;
-  fitted.name = "scene bounds";
-  fitted.grid = fitGrid(scene.bounds(), defaultSpacing);
-  if (std::string error = fitted.grid.validate(irradianceTexels, distanceTexels); !error.empty()) {
+  VolumeSpec whole;
+  whole.name = "scene bounds";
+  whole.grid =
+      fitted(scene.bounds(), defaultSpacing, "the volume fitted to the scene", "r.DDGI.ProbeSpacing");
+  if (std::string error = whole.grid.validate(irradianceTexels, distanceTexels); !error.empty()) {
     problems.push_back(fmt::format("the volume fitted to the scene: {}; left out", error));
     return specs;
   }
-  specs.push_back(std::move(fitted));
+  specs.push_back(std::move(whole));
   return specs;
 }
 

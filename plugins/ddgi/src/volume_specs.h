@@ -36,8 +36,10 @@ struct VolumeSpec {
 };
 
 /// The scene's volumes. `defaultSpacing` is r.DDGI.ProbeSpacing (0: automatic). A volume
-/// whose fields make no usable grid is left out, with a line in `problems`.
+/// whose fields make no usable grid is left out, with a line in `problems`; one whose
+/// spacing would place more than `maxProbes` probes is spaced wider, with a line too.
 std::vector<VolumeSpec> volumeSpecs(const Scene& scene, float defaultSpacing, uint32_t irradianceTexels,
-                                    uint32_t distanceTexels, std::vector<std::string>& problems);
+                                    uint32_t distanceTexels, std::vector<std::string>& problems,
+                                    uint64_t maxProbes = UINT64_MAX);
 
 }  // namespace bounce::ddgi

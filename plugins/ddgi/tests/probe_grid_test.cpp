@@ -50,6 +50,28 @@ TEST(ProbeGrid, RefusesFewerThanTwoProbesAndBadSpacing) {
   EXPECT_NE(g.validate(8, 10).find("16384"), std::string::npos);
 }
 
+TEST(ProbeGrid, AFineSpacingIsWidenedUntilTheProbesFitTheirLimit) {
+  // r.DDGI.ProbeSpacing 0.001 in a 4 × 3 × 2 m room asked for 1024 × 1024 × 1024 probes
+  // (each axis held at 1024): a billion. Bounded to a million, the spacing widens to the
+  // finest that fits, and the probes still sit half a spacing inside the faces.
+  const Aabb room{{-2.0f, 0.0f, -1.0f}, {2.0f, 3.0f, 1.0f}};
+  EXPECT_EQ(fitGrid(room, 0.001f).probeCount(), 1024u * 1024u * 1024u);
+  const uint64_t limit = 1u << 20;
+  const ProbeGrid g = fitGrid(room, 0.001f, limit);
+  EXPECT_LE(g.probeCount(), limit);
+  EXPECT_GT(g.probeCount(), limit / 2) << "not much coarser than the limit needs";
+  const float spacing = spacingForProbeLimit(room, 0.001f, limit);
+  EXPECT_EQ(fitGrid(room, spacing).counts, g.counts);
+  EXPECT_GT(fitGrid(room, spacing * 0.99f).probeCount(), limit) << "the finest spacing that fits";
+  // A spacing that already fits is kept exactly.
+  EXPECT_EQ(spacingForProbeLimit(room, 1.0f, limit), 1.0f);
+  EXPECT_EQ(fitGrid(room, 1.0f, limit).counts, glm::ivec3(4, 3, 2));
+  // The limit itself: memory, and rays per full update (2^28 of them: 2^20 probes at 256).
+  EXPECT_EQ(maxProbes(~0ull, 1432, 256), uint64_t(1) << 20);
+  EXPECT_EQ(maxProbes(uint64_t(1) << 30, 1432, 256), (uint64_t(1) << 30) / (1432 + 16 * 256));
+  EXPECT_EQ(maxProbes(0, 1432, 256), 8u) << "a two-probe cage always fits";
+}
+
 TEST(ProbeGrid, IndexAndCoordinatesRoundTripInRtxgiOrder) {
   ProbeGrid g;
   g.counts = {3, 4, 5};

@@ -91,6 +91,19 @@ TEST(VolumeSpecs, MembersOfTheWrongTypeAreReportedNotSilentlyIgnored) {
   EXPECT_EQ(problems.size(), 5u);
 }
 
+TEST(VolumeSpecs, ASpacingTooFineForTheDeviceIsWidenedWithALine) {
+  Scene scene;
+  scene.addVolume(volume("fine", {0, 0, 0}, {2, 2, 2}, {{"ProbeSpacing", 0.001}}));
+  std::vector<std::string> problems;
+  const auto specs = volumeSpecs(scene, 0.0f, 8, 10, problems, 4096);
+  ASSERT_EQ(specs.size(), 1u);
+  EXPECT_LE(specs[0].grid.probeCount(), 4096u);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].find("DDGIVolume 'fine': ProbeSpacing 0.001 m would place more probes than the 4096"),
+            std::string::npos)
+      << problems[0];
+}
+
 TEST(VolumeSpecs, ProbeCountsBeyondAnIntAreRefusedNotConverted) {
   // 1e20 as an int is undefined behaviour (it read as -2147483648); NaN too.
   Scene scene;

@@ -15,6 +15,8 @@
 
 #include <bounce/core/log.h>
 #include <bounce/core/value_hash.h>
+#include <bounce/gpu/device_memory.h>
+#include <bounce/gpu/work_estimate.h>
 #include <bounce/graph/channels.h>
 #include <bounce/graph/persistent_resource.h>
 #include <bounce/plugin/plugin.h>
@@ -96,6 +98,20 @@ class VplPlugin final : public Plugin {
     // The list keeps its buffer while it is big enough (a new one has undefined contents,
     // so its generation is part of what the list depends on).
     const uint64_t bytes = vplListBytes(frame_.plan.capacity);
+    // Estimated before anything is made: the list, and the grid's slots or the raw VPLs
+    // (48 B each) the trace writes.
+    const VplPlan& p = frame_.plan;
+    const uint64_t traced = (p.merge ? p.grid.slots() : uint64_t(p.rawVpls())) * 48;
+    // Each pixel gathers the list (every k²-th VPL when interleaved), one shadow ray each.
+    const double interleave = std::max(double(frame_.interleave), 1.0);
+    const double gathered =
+        double(frame.view.width) * frame.view.height * double(p.capacity) / (interleave * interleave);
+    if (auto slow = gpu::slowFrameWarning(frame.device, gathered, "VPL gathers",
+                                          "r.VPL.LightPaths, r.VPL.Bounces or raise r.VPL.Interleave"))
+      if (reported_.insert(*slow).second) log::warn("VPL: {}", *slow);
+    gpu::requireDeviceMemory(frame.device, bytes + traced,
+                             fmt::format("VPL buffers for {} light paths", p.paths),
+                             "r.VPL.LightPaths, r.VPL.Bounces, r.VPL.GridResolution");
     if (bytes > vplList_.desc().size) vplList_.setDesc({bytes});
     frame_.listCapacity = uint32_t((vplList_.desc().size - 16) / 48);
     ValueHash key;
@@ -152,7 +168,7 @@ class VplPlugin final : public Plugin {
 
   VplSettings settings_;
   PersistentBuffer vplList_{"VPL.Lights", {vplListBytes(1)}};
-  BufferHandle list_;  ///< this frame's latest version of vplList_
+  BufferHandle list_;              ///< this frame's latest version of vplList_
   std::filesystem::path shaders_;  ///< this plugin's shaders/ folder, wherever it is installed
   FramePlan frame_;
   uint64_t generatedKey_ = 0;

@@ -118,7 +118,10 @@ class Device {
 
   /// Allocates memory for `requirements` with `properties` (host-visible memory is
   /// mapped persistently). Throws VulkanError when no memory type fits.
-  Allocation allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties) const;
+  /// Throws OutOfDeviceMemory (bounce/gpu/device_memory.h), naming `what`, when the block is
+  /// larger than its heap or than one allocation may be, or the driver is out of memory.
+  Allocation allocate(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags properties,
+                      std::string_view what = {}) const;
   /// Device memory currently allocated through allocate() (all live Allocations), and
   /// how many blocks: what a soak run watches for leaks.
   uint64_t allocatedBytes() const { return tally_.bytes.load(); }

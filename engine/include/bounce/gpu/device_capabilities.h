@@ -65,6 +65,10 @@ struct DeviceLimits {
   uint32_t maxComputeWorkGroupInvocations = 0;
   uint32_t maxPushConstantsSize = 0;
   uint32_t subgroupSize = 0;
+  /// The largest device-local memory heap in bytes (system memory on a CPU device), and the
+  /// largest single allocation (VkPhysicalDeviceMaintenance3Properties); 0 when unknown.
+  uint64_t deviceLocalHeapBytes = 0;
+  uint64_t maxMemoryAllocationSize = 0;
 };
 
 struct DeviceCapabilities {

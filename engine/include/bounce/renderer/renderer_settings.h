@@ -8,7 +8,14 @@ namespace bounce {
 struct RendererSettings {
   explicit RendererSettings(CVarRegistry& cvars);
 
-  CVarRef<int32_t> shadowMapSize;  ///< r.Shadow.MapSize: texels per side of each shadow map
+  /// r.Shadow.MapSize: texels per side of the largest shadow map (a light filling the
+  /// screen), and of the shadow atlas's pages.
+  CVarRef<int32_t> shadowMapSize;
+  /// r.Shadow.MinResolution: the smallest shadow map a light gets (Unreal's name).
+  CVarRef<int32_t> shadowMinResolution;
+  /// r.Shadow.MemoryBudgetMB: the shadow atlas's most device memory; maps shrink, then the
+  /// least important lights go without, to stay within it.
+  CVarRef<int32_t> shadowMemoryBudgetMB;
   CVarRef<float> shadowDepthBias;  ///< r.Shadow.DepthBias: in shadow-map texels
   /// r.Shadow.CSM.MaxCascades: view-fitted cascades of a directional light's shadow, in
   /// front of the whole-scene map (0: the whole-scene map alone).

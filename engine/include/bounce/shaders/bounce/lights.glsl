@@ -2,8 +2,10 @@
 // plugins include this to light what they voxelize or trace with the same lights.
 //
 //   LIGHTS(binding)            binds `SceneLights { Light lights[]; }` (blackboard scene.lights)
-//   SHADOW_MATRICES(binding)   binds `ShadowMatrices { mat4 shadowMatrices[]; }` (scene.shadowMatrices)
-//   uniform sampler2DArrayShadow shadowMaps;   (channels::ShadowMaps, ShadowCompare sampler)
+//   SHADOW_MATRICES(binding)   binds `ShadowMatrices { ShadowMapView shadowViews[]; }` (scene.shadowMatrices):
+//                              per shadow-map layer its view-projection and its tile of the atlas
+//   uniform sampler2DArrayShadow shadowMaps;   (channels::ShadowMaps, ShadowCompare sampler): the
+//                              atlas's pages, each holding square tiles (renderer/shadow_atlas.h)
 //   #include "bounce/shadows.glsl"         after SHADOW_MATRICES: shadowFactor(), shadowFactorOverPatch()
 //
 // Units are radiometric: radiance.rgb is irradiance in W/m² at normal incidence for
@@ -27,7 +29,13 @@ struct Light {
 };
 
 #define LIGHTS(b) layout(std430, binding = b) readonly buffer SceneLights { Light lights[]; };
-#define SHADOW_MATRICES(b) layout(std430, binding = b) readonly buffer ShadowMatrices { mat4 shadowMatrices[]; };
+// One shadow-map layer: its view-projection, and where it lies in the atlas: tile.xy the
+// tile's corner and tile.z its side in a page's [0, 1] coordinates, tile.w the page.
+struct ShadowMapView {
+  mat4 viewProjection;
+  vec4 tile;
+};
+#define SHADOW_MATRICES(b) layout(std430, binding = b) readonly buffer ShadowMatrices { ShadowMapView shadowViews[]; };
 
 // Direction to the light and the irradiance it delivers at P on a surface facing it
 // (before the cosine and before shadowing).

@@ -46,6 +46,11 @@ vec3 shadowLookupPoint(Light light, vec3 P, vec3 N, vec3 L) {
   return shadowLookupPoint(light, P, N, L, shadowTexelFootprint(light, P), 1.5);
 }
 
+// Texels per side of a layer's tile (all of a light's layers share it).
+float shadowTileTexels(int layer, sampler2DArrayShadow maps) {
+  return shadowViews[layer].tile.z * float(textureSize(maps, 0).x);
+}
+
 // A directional light's finest cascade that holds P with the 3×3 taps' reach to spare
 // (its layers follow the whole-scene map, nearest the camera first; params.x of them):
 // its layer, and in `footprint` its texel in metres (an orthographic map's x row is
@@ -56,7 +61,7 @@ int shadowCascadeLayer(Light light, vec3 P, float mapTexels, inout float footpri
   int cascades = int(light.params.x + 0.5);
   float margin = 2.0 / mapTexels;
   for (int i = 1; i <= cascades; ++i) {
-    mat4 m = shadowMatrices[layer + i];
+    mat4 m = shadowViews[layer + i].viewProjection;
     vec4 clip = m * vec4(P, 1.0);
     vec3 c;
     if (shadowMapCoordinates(clip, c) && all(greaterThan(c.xy, vec2(margin))) &&
@@ -84,11 +89,21 @@ int shadowLayer(Light light, vec3 Q) {
   return layer;
 }
 
+// One hardware 2×2 PCF tap at `uv` of layer `layer`'s map ([0, 1] over its tile), against
+// `depth`. The tap is held half a texel inside the tile, so the 2×2 filter never reads a
+// neighbouring tile of the atlas: at the tile's edge it repeats the edge texels.
+float shadowAtlasTap(vec2 uv, float depth, int layer, sampler2DArrayShadow maps) {
+  vec4 tile = shadowViews[layer].tile;
+  float half_ = 0.5 / max(shadowTileTexels(layer, maps), 1.0);
+  vec2 inside = clamp(uv, vec2(half_), vec2(1.0 - half_));
+  return texture(maps, vec4(tile.xy + inside * tile.z, tile.w, depth));
+}
+
 // One hardware 2×2 PCF tap at clip-space position `clip` of map `layer`; 1 (lit) where
 // the map does not reach.
 float shadowTap(vec4 clip, int layer, sampler2DArrayShadow maps) {
   vec3 c;
-  return shadowMapCoordinates(clip, c) ? texture(maps, vec4(c.xy, float(layer), c.z)) : 1.0;
+  return shadowMapCoordinates(clip, c) ? shadowAtlasTap(c.xy, c.z, layer, maps) : 1.0;
 }
 
 // Fraction of the light reaching P (1: lit). `N` is the geometric normal, whose angle to L
@@ -97,7 +112,8 @@ float shadowTap(vec4 clip, int layer, sampler2DArrayShadow maps) {
 float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow maps) {
   if (int(light.intensity.w) < 0) return 1.0;
   float footprint = shadowTexelFootprint(light, P);
-  int cascade = shadowCascadeLayer(light, P, float(textureSize(maps, 0).x), footprint);
+  float tileTexels = shadowTileTexels(int(light.intensity.w), maps);
+  int cascade = shadowCascadeLayer(light, P, tileTexels, footprint);
   bool directional = uint(light.directionType.w + 0.5) == LIGHT_DIRECTIONAL;
   // Directional maps are orthographic: the receiver's plane has one depth slope over the
   // map, and each tap compares against the plane's depth at that tap (receiver-plane depth
@@ -106,10 +122,10 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   // light leaks a third as far behind thin occluders such as window frames.
   vec3 Q = shadowLookupPoint(light, P, N, L, footprint, directional ? 0.5 : 1.5);
   int layer = cascade != int(light.intensity.w) ? cascade : shadowLayer(light, Q);
-  mat4 m = shadowMatrices[layer];
+  mat4 m = shadowViews[layer].viewProjection;
   vec3 c;
   if (!shadowMapCoordinates(m * vec4(Q, 1.0), c)) return 1.0;
-  vec2 texel = 1.0 / vec2(textureSize(maps, 0).xy);
+  vec2 texel = vec2(1.0 / max(tileTexels, 1.0));  // in the tile's [0, 1] coordinates
   // Depth change per texel step along the receiver's plane: the plane's normal in the map's
   // normalized coordinates is M^-T N (M the linear part of the orthographic map), and depth
   // follows -(n.x du + n.y dv) / n.z with du, dv in NDC (2 per map width). Held to the
@@ -128,7 +144,7 @@ float shadowFactor(Light light, vec3 P, vec3 N, vec3 L, sampler2DArrayShadow map
   float lit = 0.0;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x)
-      lit += texture(maps, vec4(c.xy + vec2(x, y) * texel, float(layer), c.z + dot(slope, vec2(x, y))));
+      lit += shadowAtlasTap(c.xy + vec2(x, y) * texel, c.z + dot(slope, vec2(x, y)), layer, maps);
   return lit / 9.0;
 }
 
@@ -143,7 +159,7 @@ float shadowFactorOverPatch(Light light, vec3 P, vec3 N, vec3 L, vec3 halfA, vec
   if (int(light.intensity.w) < 0) return 1.0;
   vec3 Q = shadowLookupPoint(light, P, N, L);
   int layer = shadowLayer(light, Q);
-  mat4 m = shadowMatrices[layer];
+  mat4 m = shadowViews[layer].viewProjection;
   vec4 centre = m * vec4(Q, 1.0), a = 0.5 * (m * vec4(halfA, 0.0)), b = 0.5 * (m * vec4(halfB, 0.0));
 #ifdef BOUNCE_WORK_COUNTERS_GLSL
   countWork(WORK_TEXTURE_SAMPLES, 4u);
