@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace bounce {
@@ -142,8 +143,9 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
   // whole-scene map, which does not move with it).
   const ShadowCascades cascades{uint32_t(std::max(settings_.shadowCascades.get(), 0)),
                                 settings_.shadowCascadeExponent.get()};
+  const ShadowAtlasLimits limits = shadowAtlasLimits(frame);
   auto lights = std::make_shared<const LightSetup>(
-      LightSetup::build(frame.scene, shadowAtlasLimits(frame), frame.view, cascades));
+      LightSetup::build(frame.scene, limits, frame.view, cascades));
   if (shadowCache_->unshadowedChanged(lights->unshadowedLights) && lights->unshadowedLights > 0 &&
       !frame.setting(settings_.rayTracedShadows))
     log::warn(
@@ -185,11 +187,18 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
   const float slopeBias = settings_.shadowDepthBias.get();
   // Without shadow-casting lights the maps are one cleared 1×1 layer (depth 1: lit), so a
   // reader always binds a depth array, whatever the scene.
+  // Pages are made in powers of two within the budget: as a camera moves, lights' tiles
+  // resize every few steps, and the atlas then grows a few times, not at every step (the
+  // cache keeps the most it has had).
+  const uint64_t pageBytes = uint64_t(pageTexels) * pageTexels * sizeof(float);
+  const uint32_t budgetPages =
+      uint32_t(std::min<uint64_t>(limits.budgetBytes / std::max<uint64_t>(pageBytes, 1), limits.maxPages));
+  const uint32_t madePages = pages ? std::max(pages, std::min(std::bit_ceil(pages), budgetPages)) : 1u;
   const TextureDesc desc{.type = TextureType::Tex2DArray,
                          .format = VK_FORMAT_D32_SFLOAT,
                          .width = pages ? pageTexels : 1u,
                          .height = pages ? pageTexels : 1u,
-                         .layers = std::max(1u, pages)};
+                         .layers = madePages};
   ShadowMapCache& cache = *shadowCache_;
   const uint64_t key = ShadowMapCache::key(frame.scene, *lights, slopeBias);
   TextureHandle maps = g.importTexture(cache.maps(desc));  // first: a new size re-creates them
