@@ -206,6 +206,11 @@ class ViewerVxgiTest : public ScriptedViewerSuite<ViewerVxgiTest> {
            "frames 1\n" +
            shot("vxgi-opacity-64.png") +
            "vxgi.Status\n"
+           "# a clip-map the device cannot hold: refused, and the change put back\n"
+           "r.VXGI.MapSize 256\n"
+           "frames 2\n"
+           "r.VXGI.MapSize\n"
+           "vxgi.Status\n"
            "quit\n";
   }
 };
@@ -287,6 +292,27 @@ TEST_F(ViewerVxgiTest, MapSizeAndDiffuseConesChangeWhileRunning) {
   EXPECT_GT(changedFraction(opacity32again, opacity64), 0.3);
   EXPECT_GT(meanDifference(diffuse4again, diffuse16), 0.03);
   EXPECT_GT(changedFraction(diffuse4again, diffuse16), 0.3);
+}
+
+TEST_F(ViewerVxgiTest, AClipMapTheDeviceCannotHoldIsRefusedAndTheChangePutBack) {
+  // 256³ × 3 levels with six directions in FP16 is 2.8 GiB: more than the half of its 2 GiB
+  // heap that lavapipe gives a technique. The frame says why and the window stays; the
+  // console change is put back, so the next frames render the 64³ clip-map again.
+  EXPECT_EQ(session_.result.status, 0) << output();
+  const size_t refused = output().find("VXGI clip-maps of 256³ voxels need");
+  if (refused == std::string::npos) {
+    // A device with room for it: the clip-map was rebuilt instead.
+    EXPECT_NE(output().find("clip-map 256³ × 3 levels"), std::string::npos) << output();
+    return;
+  }
+  EXPECT_NE(output().find("r.VXGI.MapSize kept at 64", refused), std::string::npos) << output();
+  EXPECT_NE(output().find("r.VXGI.MapSize = 64", refused), std::string::npos) << output();
+  // vxgi.Status after the refusal reports the 64³ textures still in use.
+  const size_t status = output().rfind("clip-map 64³ × 3 levels");
+  ASSERT_NE(status, std::string::npos) << output();
+  EXPECT_GT(status, refused);
+  EXPECT_EQ(output().find("clip-map 256³"), std::string::npos) << output();
+  EXPECT_EQ(output().find("frame failed"), std::string::npos) << "no exception reached the viewer";
 }
 
 // --- flags toggled while the viewer runs ---------------------------------------------------

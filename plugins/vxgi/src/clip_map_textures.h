@@ -62,8 +62,6 @@ class ClipMapTextures {
  public:
   /// (Re)creates the textures for `format`; true when anything changed.
   bool configure(const ClipMapFormat& format);
-  /// Whether configure() has made textures (the format is then theirs).
-  bool configured() const { return configured_; }
   const ClipMapFormat& format() const { return format_; }
 
   /// Imports every texture into `graph` (constants are left invalid).

@@ -140,19 +140,12 @@ class VxgiPlugin final : public Plugin {
       log::warn("VXGI: {}; keeping the previous clip-map", error);
       format = textures_.format();
     } else if (format != textures_.format()) {
-      // Estimated before anything is made: a clip-map the device cannot hold keeps the
-      // previous one, or, on the first frame, fails it (bounce-render exits 2).
+      // Estimated before anything is made: a clip-map the device cannot hold fails the
+      // frame with the size and the settings (bounce-render exits 2; the viewer puts the
+      // console change back and keeps the previous clip-map).
       const uint64_t bytes = format.bytes() + textureBytes(ScratchLayout::of(format).desc(format));
-      try {
-        gpu::requireDeviceMemory(
-            frame.device, bytes, fmt::format("VXGI clip-maps of {}³ voxels", format.mapSize),
-            "VxgiMapSize / r.VXGI.MapSize, r.VXGI.StackLevels, r.VXGI.StoreEmittanceInFP16");
-      } catch (const gpu::OutOfDeviceMemory& e) {
-        if (!textures_.configured()) throw;
-        if (refusedFormat_ != format) log::warn("VXGI: {}; keeping the previous clip-map", e.what());
-        refusedFormat_ = format;
-        format = textures_.format();
-      }
+      gpu::requireDeviceMemory(frame.device, bytes, fmt::format("VXGI clip-maps of {}³ voxels", format.mapSize),
+                               "VxgiMapSize / r.VXGI.MapSize, r.VXGI.StackLevels, r.VXGI.StoreEmittanceInFP16");
     }
     const int32_t gatherList = settings_.bounceGatherList.get();
     if (textures_.configure(format) || gatherList != gatherListAsked_) {
@@ -284,7 +277,6 @@ class VxgiPlugin final : public Plugin {
 
   VxgiSettings settings_;
   ClipMapTextures textures_;
-  std::optional<ClipMapFormat> refusedFormat_;  ///< the last format refused for memory (warned once)
   ClipMapUpdate update_;
   BouncePropagation bounces_;
   std::optional<ClipMapLayout> lastLayout_;
