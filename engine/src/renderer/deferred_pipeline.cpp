@@ -144,8 +144,8 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
   const ShadowCascades cascades{uint32_t(std::max(settings_.shadowCascades.get(), 0)),
                                 settings_.shadowCascadeExponent.get()};
   const ShadowAtlasLimits limits = shadowAtlasLimits(frame);
-  auto lights = std::make_shared<const LightSetup>(
-      LightSetup::build(frame.scene, limits, frame.view, cascades));
+  auto lights =
+      std::make_shared<const LightSetup>(LightSetup::build(frame.scene, limits, frame.view, cascades));
   if (shadowCache_->unshadowedChanged(lights->unshadowedLights) && lights->unshadowedLights > 0 &&
       !frame.setting(settings_.rayTracedShadows))
     log::warn(
@@ -181,7 +181,13 @@ void DeferredPipeline::sceneSetup(RenderGraph& g, const FrameContext& frame) con
       }
     };
   });
+  shadowMaps(g, frame, lights, limits);
+}
 
+void DeferredPipeline::shadowMaps(RenderGraph& g, const FrameContext& frame,
+                                  const std::shared_ptr<const LightSetup>& lights,
+                                  const ShadowAtlasLimits& limits) const {
+  Blackboard& bb = g.blackboard();
   const uint32_t layers = lights->shadowLayers();
   const uint32_t pages = lights->pages, pageTexels = lights->pageTexels;
   const float slopeBias = settings_.shadowDepthBias.get();

@@ -9,6 +9,7 @@
 #include "bounce/gpu/device.h"
 #include "bounce/gpu/image.h"
 #include "bounce/renderer/renderer_settings.h"
+#include "renderer/light_setup.h"
 #include "renderer/shadow_atlas.h"
 
 #include <map>
@@ -61,6 +62,9 @@ class DeferredPipeline {
   /// The shadow atlas's page size, smallest tile and budget: the r.Shadow settings within
   /// what the device holds.
   ShadowAtlasLimits shadowAtlasLimits(const FrameContext& frame) const;
+  /// The shadow atlas (drawn, or kept from an earlier frame) for `lights`.
+  void shadowMaps(RenderGraph& graph, const FrameContext& frame,
+                  const std::shared_ptr<const LightSetup>& lights, const ShadowAtlasLimits& limits) const;
   void geometry(RenderGraph& graph, const FrameContext& frame) const;
   void lighting(RenderGraph& graph, const FrameContext& frame) const;
   void postProcess(RenderGraph& graph, const FrameContext& frame) const;

@@ -144,8 +144,9 @@ class VxgiPlugin final : public Plugin {
       // frame with the size and the settings (bounce-render exits 2; the viewer puts the
       // console change back and keeps the previous clip-map).
       const uint64_t bytes = format.bytes() + textureBytes(ScratchLayout::of(format).desc(format));
-      gpu::requireDeviceMemory(frame.device, bytes, fmt::format("VXGI clip-maps of {}³ voxels", format.mapSize),
-                               "VxgiMapSize / r.VXGI.MapSize, r.VXGI.StackLevels, r.VXGI.StoreEmittanceInFP16");
+      gpu::requireDeviceMemory(
+          frame.device, bytes, fmt::format("VXGI clip-maps of {}³ voxels", format.mapSize),
+          "VxgiMapSize / r.VXGI.MapSize, r.VXGI.StackLevels, r.VXGI.StoreEmittanceInFP16");
     }
     const int32_t gatherList = settings_.bounceGatherList.get();
     if (textures_.configure(format) || gatherList != gatherListAsked_) {
