@@ -49,7 +49,9 @@ TEST_F(ManyLights, AThousandPointLightsRenderWithEveryTechnique) {
     SCOPED_TRACE(technique);
     // Probes and paths at their cheapest: a thousand lights per ray hit is the cost here.
     start("content/cornell_box.gltf",
-          {"r.DDGI.RaysPerProbe=32", "r.DDGI.ProbeSpacing=0.5", "r.VPL.LightPaths=64"}, technique);
+          {"r.DDGI.RaysPerProbe=32", "r.DDGI.ProbeSpacing=0.5", "r.VPL.LightPaths=64", "r.VXGI.MapSize=32",
+           "r.VXGI.StackLevels=3"},
+          technique);
     addLights(*engine->scene(), 1000);
     log::Capture capture;
     const RenderedFrame first = render(32, 18, {"radiance"});
