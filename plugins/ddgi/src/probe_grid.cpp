@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace bounce::ddgi {
 
@@ -66,20 +67,32 @@ ProbeGrid fitCells(const Aabb& box, float maxSpacing) {
 
 double probeCount(const ProbeGrid& g) { return double(g.counts.x) * double(g.counts.y) * double(g.counts.z); }
 
+/// The probes fitCells would place without holding each axis at 1024: what the spacing
+/// must shrink, where the held count hardly moves with it (a 10^31 m box).
+double unheldProbeCount(const Aabb& box, double spacing) {
+  const glm::dvec3 size = box.empty() ? glm::dvec3(0.0) : glm::dvec3(box.size());
+  double count = 1.0;
+  for (int a = 0; a < 3; ++a)
+    count *=
+        size[a] > 0.0 && std::isfinite(size[a]) ? std::max(std::ceil(size[a] / spacing - 1e-4), 2.0) : 2.0;
+  return count;
+}
+
 }  // namespace
 
 float spacingForProbeLimit(const Aabb& box, float spacing, uint64_t maxProbes) {
   if (!std::isfinite(spacing) || spacing <= 0.0f) spacing = automaticSpacing(box);
   const double limit = double(std::max<uint64_t>(maxProbes, 8));
   // The count falls as the cube of the spacing; each step grows the spacing by the cube
-  // root of the excess (and a little, so rounding cells up cannot stall it). Eight probes,
-  // the least any grid has, always fit, so this ends; 64 steps bound it anyway.
+  // root of the excess the unheld count shows (and a little, so rounding cells up cannot
+  // stall it). Eight probes, the least any grid has, always fit, so this ends; 64 steps
+  // bound it anyway, and a spacing grown past float's range places those eight.
+  double grown = spacing;
   for (int step = 0; step < 64; ++step) {
-    const double count = probeCount(fitCells(box, spacing));
-    if (count <= limit) break;
-    spacing *= float(std::max(std::cbrt(count / limit), 1.0) * 1.001);
+    if (probeCount(fitCells(box, float(grown))) <= limit) break;
+    grown *= std::max(std::cbrt(unheldProbeCount(box, grown) / limit), 1.0) * 1.001;
   }
-  return spacing;
+  return float(std::min(grown, double(std::numeric_limits<float>::max())));
 }
 
 ProbeGrid fitGrid(const Aabb& box, float maxSpacing, uint64_t maxProbes) {

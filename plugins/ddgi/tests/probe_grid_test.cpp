@@ -66,6 +66,11 @@ TEST(ProbeGrid, AFineSpacingIsWidenedUntilTheProbesFitTheirLimit) {
   // A spacing that already fits is kept exactly.
   EXPECT_EQ(spacingForProbeLimit(room, 1.0f, limit), 1.0f);
   EXPECT_EQ(fitGrid(room, 1.0f, limit).counts, glm::ivec3(4, 3, 2));
+  // A box so large that every axis is held at 1024 cells (the fuzzer's 10^31 m): the
+  // held count hardly moves as the spacing grows, and the spacing must still get there.
+  const Aabb vast{{-1e30f, -1e31f, 0.0f}, {1e30f, 1e31f, 0.0f}};
+  for (const uint64_t small : {uint64_t(8), uint64_t(4096), limit})
+    EXPECT_LE(fitGrid(vast, 0.001f, small).probeCount(), small) << small;
   // The limit itself: memory, and rays per full update (2^28 of them: 2^20 probes at 256).
   EXPECT_EQ(maxProbes(~0ull, 1432, 256), uint64_t(1) << 20);
   EXPECT_EQ(maxProbes(uint64_t(1) << 30, 1432, 256), (uint64_t(1) << 30) / (1432 + 16 * 256));
