@@ -58,9 +58,14 @@ def main():
         return 0
     if not a.render or a.name not in cases:
         parser.error("need --render and a case name from the manifest")
-    codes, must_say, args, number = cases[a.name]
+    # The scratch folder (the case's outputs, FIFOs, device nodes, generated scenes when no
+    # --generated folder is given) goes with the case: ctest runs hundreds of them.
+    with tempfile.TemporaryDirectory(prefix=f"bounce-hostile-{a.name}-") as scratch:
+        return run_case(a, cases[a.name], scratch)
 
-    scratch = tempfile.mkdtemp(prefix=f"bounce-hostile-{a.name}-")
+
+def run_case(a, case, scratch):
+    codes, must_say, args, number = case
     generated = os.path.abspath(a.generated or os.path.join(scratch, "generated"))
     wanted = [x.replace("@GEN@", generated) for x in args if "@GEN@" in x]
     if not all(os.path.exists(x) for x in wanted):
