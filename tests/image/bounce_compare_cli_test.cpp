@@ -53,6 +53,22 @@ TEST(BounceCompareCli, PrintsTheErrorOfAnImageAgainstItsReference) {
   EXPECT_EQ(map.height, 8u);
 }
 
+TEST(BounceCompareCli, WorstListsThePixelsHoldingMostOfTheError) {
+  // One pixel of 64 errs by 7 in every channel: it holds all the squared error.
+  test::ScratchFolder folder;
+  const std::string image = folder.file("image.exr"), reference = folder.file("reference.exr");
+  ImageBuffer glint = halves(1.0f, 1.0f);
+  for (uint32_t c = 0; c < 3; ++c) glint.at(5, 2, c) = 8.0f;
+  std::string error;
+  ASSERT_TRUE(writeExr(glint, image, &error)) << error;
+  ASSERT_TRUE(writeExr(halves(1.0f, 1.0f), reference, &error)) << error;
+  const CommandResult r = compare(image + " " + reference + " --worst 2");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("  5 2: 8 1 (100.00%)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(": 1 1 (0.00%)"), std::string::npos) << r.output;
+  EXPECT_EQ(compare(image + " " + reference + " --worst -1").status, 2);
+}
+
 TEST(BounceCompareCli, UnreadableOrMismatchedImagesAreOneLineAndStatusTwo) {
   test::ScratchFolder folder;
   const std::string small = folder.file("small.exr"), large = folder.file("large.exr");

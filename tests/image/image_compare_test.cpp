@@ -216,6 +216,47 @@ TEST(CompareImages, SizeMismatchGivesNaNStatsAndNoCount) {
   EXPECT_EQ(broken.nonFinite, 0u);
 }
 
+// ---- worstPixels --------------------------------------------------------------------
+
+TEST(WorstPixels, RanksPixelsByTheirShareOfTheSquaredError) {
+  // Against black, a 4×1 grey image of 0, 3, 1, 2 has squared errors 0, 9, 1, 4 of 14:
+  // pixel 1 holds 9/14, pixel 3 4/14, pixel 2 1/14.
+  ImageBuffer image(4, 1, 1), reference(4, 1, 1);
+  image.pixels = {0, 3, 1, 2};
+  const std::vector<PixelError> worst = worstPixels(image, reference, 2);
+  ASSERT_EQ(worst.size(), 2u);
+  EXPECT_EQ(worst[0].x, 1u);
+  EXPECT_DOUBLE_EQ(worst[0].image, 3.0);
+  EXPECT_DOUBLE_EQ(worst[0].reference, 0.0);
+  EXPECT_NEAR(worst[0].shareOfSquaredError, 9.0 / 14.0, 1e-12);
+  EXPECT_EQ(worst[1].x, 3u);
+  EXPECT_NEAR(worst[1].shareOfSquaredError, 4.0 / 14.0, 1e-12);
+}
+
+TEST(WorstPixels, AveragesRgbAndSumsItsSquaredErrorsOverTheChannels) {
+  // Pixel (0, 1) errs by 1, 2, 3 (14 of the image's 14); the one beside it matches.
+  ImageBuffer image(1, 2, 3), reference(1, 2, 3);
+  image.pixels = {0, 0, 0, 1, 2, 3};
+  const std::vector<PixelError> worst = worstPixels(image, reference, 5);
+  ASSERT_EQ(worst.size(), 2u);  // no more than there are pixels
+  EXPECT_EQ(worst[0].y, 1u);
+  EXPECT_DOUBLE_EQ(worst[0].image, 2.0);
+  EXPECT_DOUBLE_EQ(worst[0].shareOfSquaredError, 1.0);
+  EXPECT_DOUBLE_EQ(worst[1].shareOfSquaredError, 0.0);
+}
+
+TEST(WorstPixels, LeavesOutNonFinitePixelsAndSharesNothingWhenImagesMatch) {
+  ImageBuffer image(3, 1, 1, 1.0f), reference(3, 1, 1, 1.0f);
+  image.pixels[0] = kNaN;
+  reference.pixels[2] = kInf;
+  const std::vector<PixelError> worst = worstPixels(image, reference, 3);
+  ASSERT_EQ(worst.size(), 1u);
+  EXPECT_EQ(worst[0].x, 1u);
+  EXPECT_EQ(worst[0].shareOfSquaredError, 0.0);
+  EXPECT_TRUE(worstPixels(image, ImageBuffer(2, 1, 1), 3).empty());
+  EXPECT_TRUE(worstPixels(image, reference, 0).empty());
+}
+
 // ---- errorHeatMap -------------------------------------------------------------------
 
 void expectColour(const ImageBuffer& map, uint32_t x, uint32_t y, glm::vec3 expected) {

@@ -79,6 +79,18 @@ inline constexpr uint32_t kRegionGrid = 4;
 /// (nonFinite 0).
 ImageErrorStats compareImages(const ImageBuffer& image, const ImageBuffer& reference, double epsilon = 1e-2);
 
+/// One pixel's part in an RMSE: where it is, the compared channels' means in both images,
+/// and the fraction of the whole image's squared error it holds.
+struct PixelError {
+  uint32_t x = 0, y = 0;
+  double image = 0, reference = 0;
+  double shareOfSquaredError = 0;
+};
+/// The `count` pixels holding most of the squared error, largest first: whether an RMSE
+/// is a few outliers (sub-pixel highlights, a leaking edge) or spread over the image.
+/// Pixels with a NaN/Inf are left out as in compareImages. Empty when the sizes differ.
+std::vector<PixelError> worstPixels(const ImageBuffer& image, const ImageBuffer& reference, size_t count);
+
 /// A heat map of per-pixel relative error, the mean over the compared channels of
 /// |a−b| / (|b| + epsilon): blue 0 → cyan → green `scale`/2 → yellow → red ≥ `scale`,
 /// RGB, display-encoded; NaN/Inf pixels magenta. Empty when the sizes differ.
