@@ -4,6 +4,7 @@
 
 #include "bounce/engine.h"
 #include "bounce/core/log.h"
+#include "bounce/gpu/device_memory.h"
 
 #include <gtest/gtest.h>
 
@@ -223,6 +224,11 @@ TEST(Engine, BuildFrameInterleavesEngineStagesAndHooksInExtensionPointOrder) {
                  .point = ExtensionPoint::IndirectSpecular,
                  .setup = [](RenderGraph&, const FrameContext&) { throw std::runtime_error("boom"); }},
                 kEngineOwner, "test", "");
+  e.hooks().add({.name = "refused",
+                 .point = ExtensionPoint::IndirectSpecular,
+                 .order = 1,
+                 .setup = [](RenderGraph&, const FrameContext&) { throw gpu::OutOfDeviceMemory("too big"); }},
+                kEngineOwner, "test", "");
   EngineStages stages;
   stages.geometry = [&](RenderGraph&, const FrameContext&) { calls.push_back("GEOMETRY"); };
   stages.lighting = [&](RenderGraph&, const FrameContext&) { calls.push_back("LIGHTING"); };
@@ -241,8 +247,15 @@ TEST(Engine, BuildFrameInterleavesEngineStagesAndHooksInExtensionPointOrder) {
   EXPECT_TRUE(capture.contains("pass hook 'throws' (test) failed: boom")) << capture.joined();
   // The failure comes back with the hook's timing (the renderer fails the frame with it);
   // the hooks that worked carry none.
-  for (const Engine::HookTiming& t : timings)
-    EXPECT_EQ(t.error, t.hook == "throws" ? "pass hook 'throws' (test) failed: boom" : "") << t.hook;
+  // A refusal for device memory says so by type (the viewer puts back the setting that
+  // asked for it); any other failure does not.
+  for (const Engine::HookTiming& t : timings) {
+    const std::string expected = t.hook == "throws"    ? "pass hook 'throws' (test) failed: boom"
+                                 : t.hook == "refused" ? "pass hook 'refused' (test) failed: too big"
+                                                       : "";
+    EXPECT_EQ(t.error, expected) << t.hook;
+    EXPECT_EQ(t.outOfDeviceMemory, t.hook == "refused") << t.hook;
+  }
   // TestGood's own hook ran at IndirectDiffuse and its pass carries its origin.
   ASSERT_EQ(graph.passes().size(), 1u);
   EXPECT_EQ(graph.passes()[0].origin, "TestGood");

@@ -3,6 +3,7 @@
 #include "image/image_resample.h"
 
 #include "bounce/core/names.h"
+#include "bounce/gpu/device_memory.h"
 #include "bounce/gpu/shader_compiler.h"
 #include "bounce/gpu/vulkan_error.h"
 
@@ -447,7 +448,7 @@ std::optional<ImageBuffer> Viewer::renderScene(VkRect2D rect, const FrameView& f
   std::optional<ImageBuffer> hdr;
   try {
     RenderedFrame frame = renderer_->render(view, outputs, frameIndex_++);
-    if (!frame.gpu.ok()) revertRefusedChange(frame.gpu.errors.front());
+    if (frame.gpu.outOfDeviceMemory) revertRefusedChange();
     untriedChange_.reset();
     reportChangedProblems(frame);
     if (auto it = frame.images.find("display"); it != frame.images.end() && !it->second.empty())
@@ -462,21 +463,25 @@ std::optional<ImageBuffer> Viewer::renderScene(VkRect2D rect, const FrameView& f
     lastFrame_ = std::move(frame);
   } catch (const gpu::VulkanError&) {
     throw;  // the device is gone: nothing sensible to show
+  } catch (const gpu::OutOfDeviceMemory& e) {
+    // A resource the graph makes itself (a render target, a persistent texture) refused.
+    const std::string message = fmt::format("frame failed: {}", e.what());
+    if (!reportedProblems_.count(message)) log::error("{}", message);
+    reportedProblems_ = {message};
+    revertRefusedChange();
   } catch (const std::exception& e) {
     // A shader that does not compile, a failing plugin: the window stays, with the last
     // good image, and the error is said once.
     const std::string message = fmt::format("frame failed: {}", e.what());
     if (!reportedProblems_.count(message)) log::error("{}", message);
     reportedProblems_ = {message};
-    revertRefusedChange(e.what());
     untriedChange_.reset();
   }
   return hdr;
 }
 
-void Viewer::revertRefusedChange(const std::string& error) {
-  // Device::allocate and gpu::requireDeviceMemory say "... of device memory ...".
-  if (!untriedChange_ || error.find("of device memory") == std::string::npos) return;
+void Viewer::revertRefusedChange() {
+  if (!untriedChange_) return;
   const SettingChange change = *untriedChange_;
   untriedChange_.reset();
   const ConsoleResult back = engine_->console().execute(change.name + " " + change.previous);

@@ -168,8 +168,8 @@ class Viewer {
     std::string name, previous;
   };
   std::optional<SettingChange> untriedChange_;
-  /// Puts untriedChange_ back when `error` is a refusal for device memory.
-  void revertRefusedChange(const std::string& error);
+  /// Puts untriedChange_ back: a frame was refused device memory after it.
+  void revertRefusedChange();
   std::chrono::steady_clock::time_point lastReloadCheck_{};
   std::chrono::steady_clock::time_point lastFrameTime_{};
 };

@@ -120,6 +120,8 @@ class Engine {
     /// Why the hook failed ("" when it did not): it lost its passes for the frame, and the
     /// renderer reports the frame as failed (RenderedFrame::gpu.errors).
     std::string error;
+    /// The hook was refused device memory (gpu::OutOfDeviceMemory): the input asked too much.
+    bool outOfDeviceMemory = false;
   };
 
   /// Builds one frame's graph: engine stages and plugin hooks in extension-point order.

@@ -2,6 +2,7 @@
 
 #include "bounce/core/log.h"
 #include "bounce/core/names.h"
+#include "bounce/gpu/device_memory.h"
 #include "bounce/graph/channels.h"
 #include "plugin/plugin_search_path.h"
 
@@ -391,15 +392,21 @@ std::vector<Engine::HookTiming> Engine::buildFrame(RenderGraph& graph, const Fra
       graph.setOrigin(point, hook->origin);
       const auto start = std::chrono::steady_clock::now();
       std::string error;
+      bool outOfDeviceMemory = false;
       try {
         hook->desc.setup(graph, frame);
+      } catch (const gpu::OutOfDeviceMemory& e) {
+        error = fmt::format("pass hook '{}' ({}) failed: {}", hook->desc.name, hook->origin, e.what());
+        log::error("{}", error);
+        outOfDeviceMemory = true;
       } catch (const std::exception& e) {
         // The frame goes on without what the hook set up, and says it failed.
         error = fmt::format("pass hook '{}' ({}) failed: {}", hook->desc.name, hook->origin, e.what());
         log::error("{}", error);
       }
       const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
-      timings.push_back({hook->desc.name, hook->origin, elapsed.count(), std::move(error)});
+      timings.push_back(
+          {hook->desc.name, hook->origin, elapsed.count(), std::move(error), outOfDeviceMemory});
     }
   };
   engineStage(stages.sceneSetup);

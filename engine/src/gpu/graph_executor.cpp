@@ -2,6 +2,7 @@
 
 #include "bounce/core/log.h"
 #include "bounce/gpu/barriers.h"
+#include "bounce/gpu/device_memory.h"
 #include "bounce/gpu/pass_context.h"
 #include "gpu/fallback_resources.h"
 
@@ -527,6 +528,11 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
       ctx.setTransferSources(&transferSources);
       try {
         pass.record(ctx);
+      } catch (const OutOfDeviceMemory& e) {
+        if (ctx.renderingActive()) vkCmdEndRendering(s.cmd);
+        result.errors.push_back(fmt::format("pass '{}' failed: {}", cp.name, e.what()));
+        log::error("{}", result.errors.back());
+        result.outOfDeviceMemory = true;
       } catch (const std::exception& e) {
         if (ctx.renderingActive()) vkCmdEndRendering(s.cmd);
         result.errors.push_back(fmt::format("pass '{}' failed: {}", cp.name, e.what()));

@@ -27,6 +27,9 @@ struct FrameResult {
   std::vector<PassTiming> passes;   ///< executed passes in order
   double frameMilliseconds = 0.0;   ///< first pass start to last pass end, GPU time
   std::vector<std::string> errors;  ///< passes whose recording failed (they were skipped)
+  /// One of them failed for want of device memory (gpu::OutOfDeviceMemory): the settings
+  /// or the scene asked more than the device holds, and other values may still render.
+  bool outOfDeviceMemory = false;
   bool ok() const { return errors.empty(); }
 };
 

@@ -89,8 +89,10 @@ RenderedFrame Renderer::render(const FrameView& outputView, const FrameOutputs& 
   // A hook that failed (a setting asking for more memory than the device has, say) fails
   // the frame, first among its errors: what it would have drawn is missing.
   std::vector<std::string> hookErrors;
-  for (const Engine::HookTiming& t : out.cpu)
+  for (const Engine::HookTiming& t : out.cpu) {
     if (!t.error.empty()) hookErrors.push_back(t.error);
+    out.gpu.outOfDeviceMemory = out.gpu.outOfDeviceMemory || t.outOfDeviceMemory;
+  }
   out.gpu.errors.insert(out.gpu.errors.begin(), hookErrors.begin(), hookErrors.end());
   // After the frame: its read-backs may have added notes (lateSettlingNotes).
   out.settling = settlingNotes(graph);
