@@ -14,7 +14,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 namespace bounce {
@@ -193,21 +192,18 @@ void DeferredPipeline::shadowMaps(RenderGraph& g, const FrameContext& frame,
   const float slopeBias = settings_.shadowDepthBias.get();
   // Without shadow-casting lights the maps are one cleared 1×1 layer (depth 1: lit), so a
   // reader always binds a depth array, whatever the scene.
-  // Pages are made in powers of two within the budget: as a camera moves, lights' tiles
-  // resize every few steps, and the atlas then grows a few times, not at every step (the
-  // cache keeps the most it has had).
-  const uint64_t pageBytes = uint64_t(pageTexels) * pageTexels * sizeof(float);
-  const uint32_t budgetPages =
-      uint32_t(std::min<uint64_t>(limits.budgetBytes / std::max<uint64_t>(pageBytes, 1), limits.maxPages));
-  const uint32_t madePages = pages ? std::max(pages, std::min(std::bit_ceil(pages), budgetPages)) : 1u;
   const TextureDesc desc{.type = TextureType::Tex2DArray,
                          .format = VK_FORMAT_D32_SFLOAT,
                          .width = pages ? pageTexels : 1u,
                          .height = pages ? pageTexels : 1u,
-                         .layers = madePages};
+                         .layers = std::max(pages, 1u)};
+  const uint64_t pageBytes = uint64_t(pageTexels) * pageTexels * sizeof(float);
+  const auto budgetPages =
+      uint32_t(std::min<uint64_t>(limits.budgetBytes / std::max<uint64_t>(pageBytes, 1), limits.maxPages));
   ShadowMapCache& cache = *shadowCache_;
   const uint64_t key = ShadowMapCache::key(frame.scene, *lights, slopeBias);
-  TextureHandle maps = g.importTexture(cache.maps(desc));  // first: a new size re-creates them
+  // First: a new size re-creates them.
+  TextureHandle maps = g.importTexture(cache.maps(desc, budgetPages));
   const bool cached = settings_.cacheShadowMaps.get() && cache.holds(key);
   const uint64_t frameIndex = frame.frameIndex;
   bb.setTexture(channels::ShadowMaps, maps);

@@ -3,6 +3,7 @@
 #include "bounce/core/value_hash.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace bounce {
 
@@ -28,15 +29,17 @@ uint64_t ShadowMapCache::key(const Scene& scene, const LightSetup& lights, float
   return h.value();
 }
 
-PersistentTexture& ShadowMapCache::maps(const TextureDesc& desc) {
+PersistentTexture& ShadowMapCache::maps(const TextureDesc& desc, uint32_t maxLayers) {
   if (!texture_) texture_.emplace("ShadowMaps", desc);
-  // Pages are kept when fewer will do: a moving camera resizes lights' tiles, and an atlas
-  // re-made at every step churned the driver's heap (the soak's RSS grew 9 MiB over 150
-  // frames). It grows to the most pages a scene has needed, within r.Shadow.MemoryBudgetMB.
+  // Pages are made in powers of two and kept when fewer will do: a moving camera resizes
+  // lights' tiles every few steps, and an atlas re-made at each one churned the driver's
+  // heap (the soak's RSS grew 9 MiB over 150 frames). So the atlas grows a few times, to
+  // the most pages a scene has needed, never past maxLayers (r.Shadow.MemoryBudgetMB).
   TextureDesc kept = desc;
+  if (desc.width > 1) kept.layers = std::max(desc.layers, std::min(std::bit_ceil(desc.layers), maxLayers));
   const TextureDesc& now = texture_->desc();
   if (now.format == desc.format && now.width == desc.width && now.height == desc.height && desc.width > 1)
-    kept.layers = std::max(desc.layers, now.layers);
+    kept.layers = std::max(kept.layers, now.layers);
   texture_->setDesc(kept);
   return *texture_;
 }

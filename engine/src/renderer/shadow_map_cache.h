@@ -23,9 +23,10 @@ class ShadowMapCache {
   /// Everything the maps' contents depend on, as one key.
   static uint64_t key(const Scene& scene, const LightSetup& lights, float slopeBias);
 
-  /// The persistent maps with `desc` (re-created, contents lost, when it changed), or with
-  /// more layers than it asks for when they already have them.
-  PersistentTexture& maps(const TextureDesc& desc);
+  /// The persistent maps with `desc` (re-created, contents lost, when it changed). Their
+  /// layers are `desc.layers` rounded up to a power of two within `maxLayers`, or more
+  /// when they already have them.
+  PersistentTexture& maps(const TextureDesc& desc, uint32_t maxLayers);
   /// True when the maps hold what `key` describes: an executed frame drew them with it
   /// and they have not been re-created since.
   bool holds(uint64_t key) const;
