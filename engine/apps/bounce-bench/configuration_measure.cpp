@@ -2,6 +2,7 @@
 
 #include "bounce/core/names.h"
 #include "bounce/engine.h"
+#include "bounce/frame/subpixel_samples.h"
 #include "renderer/render_stats.h"
 #include "renderer/renderer.h"
 #include "technique_groups.h"
@@ -103,12 +104,18 @@ std::optional<Measurement> measureConfiguration(const Configuration& config, con
   // once they have settled (bounce/frame/settling.h), as bounce-render renders by default:
   // the first frame is then the first that leaves no settling note (at most
   // kMostSettlingFrames), and the frames before it are untimed too.
+  // The timed frames move the view by sub-pixel offsets, as a viewer's temporal
+  // anti-aliasing does: a technique that keeps its results while nothing moves (VPL's
+  // gather, a cached shadow map) is timed doing its work, not skipping it.
   constexpr uint64_t kMostSettlingFrames = 1000;
+  const std::vector<glm::vec2> offsets = subpixelOffsets(std::max(options.frames, 1u));
   uint64_t index = 0, settlingFrames = 0;
   for (uint32_t f = 0; f < options.frames; ++f) {
     RenderedFrame frame;
+    FrameOutputs timed;
+    if (f > 0) timed.jitter = offsets[f];
     do {
-      frame = renderer.render(view, FrameOutputs{}, index++);
+      frame = renderer.render(view, timed, index++);
       if (!frame.gpu.ok()) {
         if (error) *error = fmt::format("{}: {}", config.label, frame.gpu.errors.front());
         return std::nullopt;

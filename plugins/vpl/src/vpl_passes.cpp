@@ -1,5 +1,6 @@
 #include "vpl_passes.h"
 
+#include <bounce/core/value_hash.h>
 #include <bounce/gpu/barriers.h>
 #include <bounce/gpu/buffer.h>
 #include <bounce/gpu/pass_context.h>
@@ -126,9 +127,52 @@ BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferH
   return out;
 }
 
-void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list) {
+uint64_t gatherKey(const FrameContext& frame, const FramePlan& f, uint64_t listKey) {
+  ValueHash h;
+  h.add(listKey).add(frame.view.width).add(frame.view.height).add(frame.view.textureLodBias);
+  for (const glm::mat4* m : {&frame.view.viewProjection, &frame.view.inverseViewProjection})
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) h.add((*m)[c][r]);
+  h.add(frame.view.position.x).add(frame.view.position.y).add(frame.view.position.z);
+  h.add(f.clampCells).add(f.intensity).add(f.interleave).add(f.listCapacity).add(f.plan.lit);
+  return h.value();
+}
+
+void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list,
+                   GatherCache& cache, uint64_t key) {
   const std::filesystem::path shaders = f.shaders;  // copied into the record callbacks
   Blackboard& bb = graph.blackboard();
+  const uint32_t k = std::max(f.interleave, 1u);
+  // Unlit, the passes are skipped and readers see no irradiance: never a kept, stale one.
+  const bool cacheable = f.plan.lit;
+  const VkFormat gatheredFormat = k == 1 ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT;
+  if (cacheable) {
+    cache.texture.setDesc({.format = gatheredFormat, .width = frame.view.width, .height = frame.view.height});
+    // A re-created texture holds nothing (its generation is new).
+    if (cache.texture.generation() != cache.textureGeneration) cache.key = 0;
+    cache.textureGeneration = cache.texture.generation();
+  }
+  const bool kept = cacheable && cache.key == key;
+  const uint64_t gatheredAt = cache.gatheredAt, frameIndex = frame.frameIndex;
+  GatherCache* const into = &cache;
+  auto keptCondition = [kept, gatheredAt] {
+    return kept ? PassDecision::skip(fmt::format(
+                      "irradiance unchanged since frame {}: the same VPLs, view and settings", gatheredAt))
+                : PassDecision::run("the VPLs, the view or a gather setting changed");
+  };
+  // The pass that writes the final irradiance (Gather, or Deinterleave after it) says it
+  // is there; the texture it writes is the cache's when the plan is lit.
+  auto finalTarget = [&](PassBuilder& b, const char* name, VkFormat format, Access access) {
+    TextureHandle out = cacheable ? b.write(graph.importTexture(cache.texture), access)
+                                  : b.write(b.createTexture(name, TextureDesc::viewSized(format)), access);
+    bb.setTexture(channels::IndirectDiffuse, out);
+    return out;
+  };
+  auto remember = [into, cacheable, key, frameIndex] {
+    if (!cacheable) return;
+    into->key = key;
+    into->gatheredAt = frameIndex;
+  };
   const float clampDistance = f.clampCells * f.plan.grid.cell;
   struct GatherPush {
     glm::mat4 inverseViewProjection;
@@ -146,20 +190,22 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
          glm::uvec4(f.interleave, 0u, 0u, 0u)};
   static_assert(sizeof(GatherPush) <= 128);
   const uint32_t capacity = f.listCapacity;
-  const uint32_t k = std::max(f.interleave, 1u);
   TextureHandle gathered;
   graph.addPass("VPL.Gather", Queue::Compute, [&](PassBuilder& b) -> RecordFn {
     const RayTracingSceneHandles rt = readRayTracingScene(b, bb);
     const BufferHandle lights = b.read(list, Access::StorageRead);
     const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
     const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
-    const TextureHandle out = b.write(b.createTexture(k == 1 ? "VPL.IndirectIrradiance" : "VPL.Interleaved",
-                                                      TextureDesc::viewSized(VK_FORMAT_R32G32B32A32_SFLOAT)),
-                                      Access::StorageReadWrite);
-    if (k == 1) bb.setTexture(channels::IndirectDiffuse, out);
+    const TextureHandle out =
+        k == 1 ? finalTarget(b, "VPL.IndirectIrradiance", gatheredFormat, Access::StorageReadWrite)
+               : b.write(b.createTexture("VPL.Interleaved",
+                                         TextureDesc::viewSized(VK_FORMAT_R32G32B32A32_SFLOAT)),
+                         Access::StorageReadWrite);
     gathered = out;
     b.condition(litCondition(f));
+    b.condition(keptCondition);
     return [=](PassContext& ctx) {
+      if (k == 1) remember();
       gpu::Bindings bind;
       bindRayTracingScene(bind, rt).buffer("VplLights", lights);
       bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
@@ -199,12 +245,11 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
     const TextureHandle depth = b.read(bb.texture(channels::GBufferDepth), Access::Sampled);
     const TextureHandle normal = b.read(bb.texture(channels::GBufferNormalRoughness), Access::Sampled);
     const TextureHandle in = b.read(gathered, Access::Sampled);
-    const TextureHandle out = b.write(
-        b.createTexture("VPL.IndirectIrradiance", TextureDesc::viewSized(VK_FORMAT_R16G16B16A16_SFLOAT)),
-        Access::StorageWrite);
-    bb.setTexture(channels::IndirectDiffuse, out);
+    const TextureHandle out = finalTarget(b, "VPL.IndirectIrradiance", gatheredFormat, Access::StorageWrite);
     b.condition(litCondition(f));
+    b.condition(keptCondition);
     return [=](PassContext& ctx) {
+      remember();
       gpu::Bindings bind;
       bind.texture("gDepth", depth, gpu::SamplerKind::NearestClamp)
           .texture("gNormalRoughness", normal, gpu::SamplerKind::NearestClamp)

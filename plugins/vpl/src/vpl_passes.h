@@ -9,6 +9,7 @@
 #include "vpl_plan.h"
 
 #include <bounce/frame/frame_context.h>
+#include <bounce/graph/persistent_resource.h>
 #include <bounce/graph/render_graph.h>
 
 #include <filesystem>
@@ -33,12 +34,29 @@ struct FramePlan {
   std::filesystem::path shaders;  ///< the plugin's shader folder (PluginContext::shaderFolder)
 };
 
+/// The gathered irradiance, kept from frame to frame: a still view of a scene whose VPLs
+/// did not change (a paused viewer, the frames a benchmark measures flicker over) gathers
+/// the same values again, so such a frame reuses them and the gather is skipped.
+struct GatherCache {
+  PersistentTexture texture{"VPL.IndirectIrradiance", TextureDesc{}};
+  uint64_t key = 0;         ///< what `texture` holds: gatherKey() of the frame that gathered it (0: nothing)
+  uint64_t gatheredAt = 0;  ///< that frame's index
+  uint64_t textureGeneration = 0;  ///< `texture`'s generation when `key` was last checked
+};
+
+/// Everything a gather's result depends on: the VPL list's contents (`listKey`, which covers
+/// the scene's geometry, transforms, materials and lights), the view (jitter included), the
+/// render size, the G-buffer's texture level bias and the gather's own settings.
+uint64_t gatherKey(const FrameContext& frame, const FramePlan& f, uint64_t listKey);
+
 /// The generation passes; `list` is the imported persistent VPL list, returned written.
 /// `onGenerated` runs when the merge pass is recorded (the list then holds this plan).
 BufferHandle addGenerationPasses(RenderGraph& graph, const FramePlan& f, BufferHandle list,
                                  std::function<void()> onGenerated);
-/// VPL.Gather (and VPL.Deinterleave for r.VPL.Interleave > 1), publishing the IndirectDiffuse channel.
-void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list);
+/// VPL.Gather (and VPL.Deinterleave for r.VPL.Interleave > 1), publishing the IndirectDiffuse
+/// channel: into `cache`, skipped when it already holds `key` (gatherKey).
+void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list,
+                   GatherCache& cache, uint64_t key);
 /// VPL.Debug for modes 2 and 3, publishing the DebugView channel.
 void addDebugPass(RenderGraph& graph, const FrameContext& frame, const FramePlan& f, BufferHandle list,
                   uint32_t mode);

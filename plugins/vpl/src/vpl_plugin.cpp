@@ -55,7 +55,8 @@ class VplPlugin final : public Plugin {
     ctx.addPassHook({.name = "VPL.Gather",
                      .point = ExtensionPoint::IndirectDiffuse,
                      .setup = [this](RenderGraph& g, const FrameContext& f) {
-                       if (list_.valid()) addGatherPass(g, f, frame_, list_);
+                       if (list_.valid())
+                         addGatherPass(g, f, frame_, list_, gathered_, gatherKey(f, frame_, listKey_));
                      }});
     ctx.addPassHook({.name = "VPL.Debug",
                      .point = ExtensionPoint::DebugView,
@@ -129,6 +130,7 @@ class VplPlugin final : public Plugin {
     }
     key.add(vplList_.generation());
     const uint64_t k = key.value();
+    listKey_ = k;
     frame_.regenerate = k != generatedKey_;
     frame_.regenerateReason = generatedKey_ == 0 ? "first generation"
                               : frame_.regenerate
@@ -172,6 +174,8 @@ class VplPlugin final : public Plugin {
   std::filesystem::path shaders_;  ///< this plugin's shaders/ folder, wherever it is installed
   FramePlan frame_;
   uint64_t generatedKey_ = 0;
+  uint64_t listKey_ = 0;  ///< what this frame's VPL list holds once its passes ran
+  GatherCache gathered_;  ///< the last gather's irradiance and what it was gathered from
   std::vector<VplEmitter> emitters_;
   double emitterPower_ = 0.0;
   uint64_t emittersKey_ = 0;
