@@ -81,6 +81,8 @@ def main():
     parser.add_argument("--seconds", type=float, default=6.0, help="seconds sampled")
     parser.add_argument("--top", type=int, default=2, help="mappings shown block by block")
     parser.add_argument("--min-share", type=float, default=0.5, help="blocks under this %% of a mapping's samples are left out")
+    parser.add_argument("--show-blocks", type=float, default=101.0,
+                        help="print the instructions (and samples) of blocks holding at least this %% of a mapping's samples")
     parser.add_argument("command", nargs=argparse.REMAINDER)
     args = parser.parse_args()
     command = args.command[1:] if args.command[:1] == ["--"] else args.command
@@ -149,6 +151,7 @@ def report(args, command, work):
         print("| first instruction | instructions | loads | samples | samples per instruction | ends with |")
         print("|---:|---:|---:|---:|---:|---|")
         start = 0
+        shown = []
         for i, (address, instruction) in enumerate(code):
             if instruction.startswith(("j", "call", "ret")) or i == len(code) - 1:
                 block = code[start : i + 1]
@@ -157,7 +160,13 @@ def report(args, command, work):
                     loads = sum(1 for _, x in block if is_load(x))
                     print(f"| {block[0][0] - base:#x} | {len(block)} | {loads} | {100 * n / count:.1f}% | "
                           f"{n / len(block):.2f} | `{instruction.split()[0]}` |")
+                    if n >= args.show_blocks / 100 * count:
+                        shown.append((block, n))
                 start = i + 1
+        for block, n in shown:
+            print(f"\nblock {block[0][0] - base:#x} ({100 * n / count:.1f}% of the mapping's samples):")
+            for address, instruction in block:
+                print(f"  {address - base:#8x} {hits.get(address, 0):6d}  {instruction}")
 
 
 if __name__ == "__main__":
