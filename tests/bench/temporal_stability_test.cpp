@@ -64,5 +64,29 @@ TEST(Response, OvershootIsHowFarTheMeanWentPastWhereItSettled) {
   EXPECT_NEAR(response(grey(2.0f), {grey(0.8f), grey(1.0f)}, grey(1.0f)).overshoot, 0.2, 1e-6);
 }
 
+TEST(ChangesHaveLevelledOff, ADecayingTransientKeepsFallingANoiseFloorDoesNot) {
+  // A probe volume's transient at hysteresis 0.97 (changes × 0.97 a frame: the last 8
+  // frames' mean is 0.78 of the 8 before) keeps falling; noise of a constant size with a
+  // little jitter has levelled off; so has the transient once it sinks into that noise.
+  std::vector<double> transient, noise, both;
+  for (int i = 0; i < 40; ++i) {
+    transient.push_back(0.05 * std::pow(0.97, i));
+    noise.push_back(0.01 * (1.0 + 0.05 * std::sin(3.0 * i)));
+    both.push_back(0.05 * std::pow(0.8, i) + noise.back());
+  }
+  EXPECT_FALSE(changesHaveLevelledOff(transient));
+  EXPECT_TRUE(changesHaveLevelledOff(noise));
+  EXPECT_TRUE(changesHaveLevelledOff(both));
+  EXPECT_FALSE(changesHaveLevelledOff(std::vector<double>(both.begin(), both.begin() + 16)));
+  // Too few changes to tell, and a still image (no change at all) that has levelled off.
+  EXPECT_FALSE(changesHaveLevelledOff(std::vector<double>(noise.begin(), noise.begin() + 15)));
+  EXPECT_TRUE(changesHaveLevelledOff(std::vector<double>(16, 0.0)));
+  // A slower transient (0.99 a frame, 0.92 over 8) passes for levelled off: what keeps this
+  // criterion to a still scene's settling and out of the responses.
+  std::vector<double> slow;
+  for (int i = 0; i < 16; ++i) slow.push_back(0.05 * std::pow(0.99, i));
+  EXPECT_TRUE(changesHaveLevelledOff(slow));
+}
+
 }  // namespace
 }  // namespace bounce::bench

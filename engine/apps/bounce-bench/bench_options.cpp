@@ -44,7 +44,9 @@ std::optional<int> parseBenchOptions(int argc, char** argv, BenchOptions& o) {
                  "Seconds of reference rendering per scene before it stops gaining samples");
   app.add_option("--reference-bounces", o.referenceBounces, "Bounces of the reference (-1 unlimited)")
       ->check(CLI::Range(-1, 1000));
-  app.add_option("--frames", o.frames, "Timed frames per configuration (the first is not timed)")
+  app.add_option(
+         "--frames", o.frames,
+         "Timed frames per configuration (the first is not timed; the path tracer times its scored still)")
       ->check(CLI::Range(1u, 1000u));
   app.add_flag("--grid", o.grid, "Every combination of knob values instead of one knob at a time");
   app.add_option("--set", o.sets, "Console variable NAME=VALUE for every run (repeatable)");

@@ -103,7 +103,11 @@ void appendSetup(std::string& out, const Report& report, const std::string& head
     out += fmt::format("- Reference noise: its indirect light's relative RMSE is {} ({})\n",
                        errorValue(report.referenceNoise),
                        report.referenceStop.empty() ? std::string(kMissing) : report.referenceStop);
-  out += fmt::format("- Timed frames: {} per configuration (times are medians)\n\n", report.timedFrames);
+  out += fmt::format(
+      "- Timed frames: {} per configuration at sub-pixel offsets (times are medians); the path tracer's time "
+      "is "
+      "its scored still's\n\n",
+      report.timedFrames);
 }
 
 void appendLegend(std::string& out) {

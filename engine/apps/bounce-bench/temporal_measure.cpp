@@ -48,8 +48,9 @@ Light movedLight(const Light& light, const Aabb& bounds) {
 }
 
 std::vector<ImageBuffer> framesUntilSettled(Renderer& renderer, const FrameView& view, uint64_t& frameIndex,
-                                            uint32_t most, std::string* error) {
+                                            uint32_t most, std::string* error, bool orAtTheNoiseFloor) {
   std::vector<ImageBuffer> frames;
+  std::vector<double> changes;
   FrameOutputs outputs;
   outputs.aovs = {"radiance"};
   uint32_t quiet = 0;
@@ -63,9 +64,11 @@ std::vector<ImageBuffer> framesUntilSettled(Renderer& renderer, const FrameView&
     // A technique that adapts by blending (a probe volume's hysteresis) has no settling
     // note after a change of light, only a changing image: it has settled when the image
     // stops changing. 1e-4 of the mean is far below any visible step and above float rounding.
-    const bool still = !frames.empty() && relativeMae(image, frames.back(), meanValue(image)) < 1e-4;
-    quiet = f.settling.empty() && still ? quiet + 1 : 0;
+    const double change = frames.empty() ? 1.0 : relativeMae(image, frames.back(), meanValue(image));
+    quiet = f.settling.empty() && change < 1e-4 ? quiet + 1 : 0;
+    if (!frames.empty()) changes.push_back(change);
     frames.push_back(std::move(image));
+    if (orAtTheNoiseFloor && f.settling.empty() && changesHaveLevelledOff(changes)) break;
   }
   return frames;
 }
@@ -80,7 +83,10 @@ TemporalMeasure measureTemporal(
   // Settle first on the unjittered view: the scored still before this jittered the view,
   // and a history filled from jittered frames (sparse tracing's) takes its own frames to
   // be replaced, which read as flicker (a p95 of 0.044 on the Cornell box).
-  if (framesUntilSettled(renderer, view, frameIndex, options.mostFrames, &out.error).empty()) return out;
+  // A technique whose frames carry noise never stands still: it has settled when its frame
+  // -to-frame change stops falling (a probe volume tracing random rays changes every frame).
+  if (framesUntilSettled(renderer, view, frameIndex, options.mostFrames, &out.error, true).empty())
+    return out;
   std::vector<ImageBuffer> still;
   for (uint32_t i = 0; i < options.flickerFrames; ++i) {
     RenderedFrame f = renderer.render(view, outputs, frameIndex++);

@@ -48,9 +48,13 @@ TemporalMeasure measureTemporal(
 
 /// Renders `radiance` frames until the technique's results have settled (three frames in
 /// a row without a settling note, bounce/frame/settling.h, each within 1e-4 of the image's
-/// mean of the frame before) or `most` frames; the images in order. Empty with `error` set when a frame
-/// fails.
+/// mean of the frame before) or `most` frames; the images in order. With
+/// `orAtTheNoiseFloor`, also once the frame-to-frame change has stopped falling
+/// (changesHaveLevelledOff): for a still scene, not after a change, where a slow transient
+/// would pass for noise before it reached the 5% the responses measure. Empty with `error`
+/// set when a frame fails.
 std::vector<ImageBuffer> framesUntilSettled(Renderer& renderer, const FrameView& view, uint64_t& frameIndex,
-                                            uint32_t most, std::string* error);
+                                            uint32_t most, std::string* error,
+                                            bool orAtTheNoiseFloor = false);
 
 }  // namespace bounce::bench

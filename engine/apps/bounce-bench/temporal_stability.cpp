@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace bounce::bench {
 
@@ -18,6 +19,14 @@ bool sameSize(const ImageBuffer& a, const ImageBuffer& b) {
 }
 
 }  // namespace
+
+bool changesHaveLevelledOff(const std::vector<double>& changes, size_t window) {
+  if (window == 0 || changes.size() < 2 * window) return false;
+  const auto last = changes.end() - std::ptrdiff_t(window);
+  const double recent = std::accumulate(last, changes.end(), 0.0);
+  const double before = std::accumulate(last - std::ptrdiff_t(window), last, 0.0);
+  return recent >= 0.9 * before;
+}
 
 double meanValue(const ImageBuffer& image) {
   double sum = 0;

@@ -25,6 +25,14 @@ double relativeMae(const ImageBuffer& a, const ImageBuffer& b, double scale);
 /// Mean of an image's RGB values.
 double meanValue(const ImageBuffer& image);
 
+/// Whether frame-to-frame changes (each relative MAE to the frame before, in order) have
+/// stopped falling: the mean of the last `window` is at least 0.9 of the mean of the
+/// `window` before. A transient that decays, however slowly down to 1.3% a frame (0.9 over
+/// 8 frames), keeps falling; a technique whose frames carry noise (a probe volume's random
+/// rays) changes about as much from frame to frame forever. False with fewer than 2 ×
+/// `window` changes, and while the changes are still falling.
+bool changesHaveLevelledOff(const std::vector<double>& changes, size_t window = 8);
+
 struct Response {
   /// Frames after the change (1: the first frame after it) from which every frame is
   /// within `tolerance` of the settled image; -1 when the last one is not.
