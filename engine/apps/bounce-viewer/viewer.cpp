@@ -463,18 +463,14 @@ std::optional<ImageBuffer> Viewer::renderScene(VkRect2D rect, const FrameView& f
     lastFrame_ = std::move(frame);
   } catch (const gpu::VulkanError&) {
     throw;  // the device is gone: nothing sensible to show
-  } catch (const gpu::OutOfDeviceMemory& e) {
-    // A resource the graph makes itself (a render target, a persistent texture) refused.
-    const std::string message = fmt::format("frame failed: {}", e.what());
-    if (!reportedProblems_.count(message)) log::error("{}", message);
-    reportedProblems_ = {message};
-    revertRefusedChange();
   } catch (const std::exception& e) {
     // A shader that does not compile, a failing plugin: the window stays, with the last
-    // good image, and the error is said once.
+    // good image, and the error is said once. A resource the graph makes itself (a render
+    // target, a persistent texture) refused for memory puts the change back.
     const std::string message = fmt::format("frame failed: {}", e.what());
     if (!reportedProblems_.count(message)) log::error("{}", message);
     reportedProblems_ = {message};
+    if (dynamic_cast<const gpu::OutOfDeviceMemory*>(&e)) revertRefusedChange();
     untriedChange_.reset();
   }
   return hdr;

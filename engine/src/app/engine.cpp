@@ -395,13 +395,10 @@ std::vector<Engine::HookTiming> Engine::buildFrame(RenderGraph& graph, const Fra
       bool outOfDeviceMemory = false;
       try {
         hook->desc.setup(graph, frame);
-      } catch (const gpu::OutOfDeviceMemory& e) {
-        error = fmt::format("pass hook '{}' ({}) failed: {}", hook->desc.name, hook->origin, e.what());
-        log::error("{}", error);
-        outOfDeviceMemory = true;
       } catch (const std::exception& e) {
         // The frame goes on without what the hook set up, and says it failed.
         error = fmt::format("pass hook '{}' ({}) failed: {}", hook->desc.name, hook->origin, e.what());
+        outOfDeviceMemory = dynamic_cast<const gpu::OutOfDeviceMemory*>(&e) != nullptr;
         log::error("{}", error);
       }
       const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;

@@ -528,13 +528,10 @@ FrameResult GraphExecutor::execute(const RenderGraph& graph, const CompiledGraph
       ctx.setTransferSources(&transferSources);
       try {
         pass.record(ctx);
-      } catch (const OutOfDeviceMemory& e) {
-        if (ctx.renderingActive()) vkCmdEndRendering(s.cmd);
-        result.errors.push_back(fmt::format("pass '{}' failed: {}", cp.name, e.what()));
-        log::error("{}", result.errors.back());
-        result.outOfDeviceMemory = true;
       } catch (const std::exception& e) {
         if (ctx.renderingActive()) vkCmdEndRendering(s.cmd);
+        result.outOfDeviceMemory =
+            result.outOfDeviceMemory || dynamic_cast<const OutOfDeviceMemory*>(&e) != nullptr;
         result.errors.push_back(fmt::format("pass '{}' failed: {}", cp.name, e.what()));
         log::error("{}", result.errors.back());
       }

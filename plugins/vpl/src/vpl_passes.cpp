@@ -146,13 +146,10 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
   // Unlit, the passes are skipped and readers see no irradiance: never a kept, stale one.
   const bool cacheable = f.plan.lit;
   const VkFormat gatheredFormat = k == 1 ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R16G16B16A16_SFLOAT;
-  if (cacheable) {
+  if (cacheable)
     cache.texture.setDesc({.format = gatheredFormat, .width = frame.view.width, .height = frame.view.height});
-    // A re-created texture holds nothing (its generation is new).
-    if (cache.texture.generation() != cache.textureGeneration) cache.key = 0;
-    cache.textureGeneration = cache.texture.generation();
-  }
-  const bool kept = cacheable && cache.key == key;
+  // A re-created texture (a new generation) holds nothing.
+  const bool kept = cacheable && cache.key == key && cache.gatheredGeneration == cache.texture.generation();
   const uint64_t gatheredAt = cache.gatheredAt, frameIndex = frame.frameIndex;
   GatherCache* const into = &cache;
   auto keptCondition = [kept, gatheredAt] {
@@ -172,6 +169,7 @@ void addGatherPass(RenderGraph& graph, const FrameContext& frame, const FramePla
     if (!cacheable) return;
     into->key = key;
     into->gatheredAt = frameIndex;
+    into->gatheredGeneration = into->texture.generation();
   };
   const float clampDistance = f.clampCells * f.plan.grid.cell;
   struct GatherPush {

@@ -41,7 +41,7 @@ struct GatherCache {
   PersistentTexture texture{"VPL.IndirectIrradiance", TextureDesc{}};
   uint64_t key = 0;         ///< what `texture` holds: gatherKey() of the frame that gathered it (0: nothing)
   uint64_t gatheredAt = 0;  ///< that frame's index
-  uint64_t textureGeneration = 0;  ///< `texture`'s generation when `key` was last checked
+  uint64_t gatheredGeneration = 0;  ///< `texture`'s generation when it was gathered into
 };
 
 /// Everything a gather's result depends on: the VPL list's contents (`listKey`, which covers
