@@ -105,7 +105,7 @@ std::optional<Measurement> measureConfiguration(const Configuration& config, con
   // the first frame is then the first that leaves no settling note (at most
   // kMostSettlingFrames), and the frames before it are untimed too.
   // The timed frames move the view by sub-pixel offsets, as a viewer's temporal
-  // anti-aliasing does: a technique that keeps its results while nothing moves (VPL's
+  // anti-aliasing does: a technique that keeps its results while nothing moves (a kept
   // gather, a cached shadow map) is timed doing its work, not skipping it.
   // The path tracer's scored still is one frame of the very work a timed frame does (all its
   // samples, at the pixel centres' footprint): it is timed instead of frames of its own, which
